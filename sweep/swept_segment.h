@@ -1,0 +1,52 @@
+// SweptSegment: the solid swept by a cutter moving along one straight segment with a
+// fixed axis, and its exact lowest point on a vertical line.
+//
+// The swept solid C = K (+) [0, d] is convex (K is), so its lower boundary is a convex
+// height function F(x, y). F is evaluated exactly in double: see swept_segment.cpp.
+#pragma once
+
+#include "sweep/cutter.h"
+#include "sweep/vec3.h"
+
+namespace scallop {
+
+// The lowest point of a swept solid on one vertical line.
+struct LowestPoint {
+  bool hit = false;  // false: the vertical line misses the solid
+  double z = 0;      // mm, valid when hit
+  // Outward normal of the solid at that point (unit). When normal.z < 0 the plane
+  // through (x, y, z) with this normal supports the solid from below, so it bounds
+  // F from below everywhere: the scene uses it for conservative culling.
+  Vec3 normal;
+};
+
+class SweptSegment {
+ public:
+  // `axis` must be a unit vector; `start`/`end` are tip positions, mm.
+  SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& end, const Vec3& axis);
+
+  // Exact lowest point of the swept solid on the vertical line through (x, y).
+  LowestPoint lowestPoint(double x, double y) const;
+
+  // Tight axis-aligned bounds of the swept solid.
+  Box3 bounds() const;
+
+  const Cutter& cutter() const { return cutter_; }
+  const Vec3& start() const { return start_; }
+  const Vec3& end() const { return end_; }
+  const Vec3& axis() const { return axis_; }
+
+ private:
+  Cutter cutter_;
+  Vec3 start_, end_, axis_;
+};
+
+// Support point of the stationary cutter (tip at origin, unit axis `axis`) in
+// direction `dir` (need not be unit): a point of K maximising dot(dir, p).
+Vec3 cutterSupport(const Cutter& cutter, const Vec3& axis, const Vec3& dir);
+
+// Exact lowest point of the stationary cutter (tip at origin) on the vertical line
+// through (x, y). Exposed for tests and for the stamping baseline.
+LowestPoint cutterLowestPoint(const Cutter& cutter, const Vec3& axis, double x, double y);
+
+}  // namespace scallop
