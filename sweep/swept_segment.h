@@ -31,6 +31,11 @@ class SweptSegment {
   // Tight axis-aligned bounds of the swept solid.
   Box3 bounds() const;
 
+  // Support function of the swept solid: max of dot(dir, p) over the solid. For any
+  // dir with dir.z < 0 the plane dot(dir, p) = support(dir) bounds the heights from
+  // below everywhere, which is what the scene's culling bounds are made of.
+  double support(const Vec3& dir) const;
+
   const Cutter& cutter() const { return cutter_; }
   const Vec3& start() const { return start_; }
   const Vec3& end() const { return end_; }

@@ -1,0 +1,212 @@
+// Exact lowest point of a swept cutter on a vertical line.
+//
+// Notation (tool frame: tip at the origin, unit axis a, s = p.a, rho = distance from
+// the axis): the cutter is K = (K0 (+) Ball(r)) with s <= L, where K0 is the solid
+// cylinder of radius Rb = R - r between s = r and s = L (cutter.h). K is convex.
+//
+// The swept solid of a move d is C = K (+) [0, d]. Its lowest point on the vertical
+// line l through q is found by a reduction to two dimensions:
+//
+//   1. Every point of C on l is k + t d with k in K and t in [0, 1]. Because d lies in
+//      the vertical plane P that contains l and is parallel to d, k lies in P too. So
+//      only the plane section S = K n P matters, and l n C is the lowest point of the
+//      2D Minkowski sum S (+) [0, d] on the line u = u0 (u: horizontal coordinate
+//      along d in P).
+//   2. With lambda(v) the (convex) lower boundary of S and sigma = dz / |d_xy| the slope
+//      of the move, the lowest point is
+//          z* = min over v in [u0 - |d_xy|, u0] of  lambda(v) + (u0 - v) sigma,
+//      a convex function of v. Its unconstrained minimiser is the support point of S
+//      in direction n = sigma u_hat - z_hat (the point where S's lower boundary has
+//      slope sigma: the envelope or "grazing" point). Clamped to the interval, the
+//      minimiser is either that point swept along d, or the cutter at the start
+//      (t = 0) or at the end (t = 1) of the move.
+//   3. The support point of the section S in direction n is the support point of K in
+//      a direction n cos(theta) + m sin(theta) (m: normal of P) for the theta at which
+//      it lies on P (Lagrange). Its offset from P is monotone in theta, so it is found
+//      by bisection on closed-form support points of K; the final point interpolates
+//      the two bracketing support points, which lies in K and exactly on P.
+//
+// The stationary cutter's lowest point on a vertical line (the t = 0 / t = 1 cases)
+// is the lowest root of the convex function Phi(z) = max(dist(p, K0) - r, s - L)
+// along the line, found by Newton's method from below: for a convex function the
+// tangent root never overshoots the lowest root, so the iteration is monotone.
+#include "sweep/swept_segment.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace scallop {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Distance from p (tool frame) to K0 and its gradient, for the Newton iteration.
+struct DistanceToCore {
+  double value;
+  Vec3 gradient;
+};
+
+DistanceToCore distanceToCore(const Cutter& c, const Vec3& a, const Vec3& p) {
+  const double r = c.cornerRadius, L = c.fluteLength, Rb = c.bottomRadius();
+  const double s = dot(p, a);
+  const Vec3 perp = p - a * s;
+  const double rho = length(perp);
+  // Axial and radial excess over the core cylinder.
+  const double ds = s < r ? s - r : (s > L ? s - L : 0.0);
+  const double dr = rho > Rb ? rho - Rb : 0.0;
+  const double dist = std::sqrt(ds * ds + dr * dr);
+  Vec3 grad;
+  if (dist > 0) {
+    grad = a * (ds / dist);
+    if (dr > 0) grad += perp * (dr / (dist * rho));
+  }
+  return {dist, grad};
+}
+
+}  // namespace
+
+Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
+  const double va = dot(dir, a);
+  const Vec3 perp = dir - a * va;
+  const double lp = length(perp);
+  const Vec3 e = lp > 0 ? perp / lp : Vec3{};
+  if (va > 0) {
+    // Pointing towards the shank: the rim of the flat top at s = L.
+    return a * c.fluteLength + e * c.radius;
+  }
+  // Pointing down or sideways: the bottom rim of the core (+) r times the unit direction,
+  // i.e. the torus (ball, or the sharp rim of a flat cutter when r = 0).
+  const double len = length(dir);
+  return a * c.cornerRadius + e * c.bottomRadius() + dir * (c.cornerRadius / len);
+}
+
+LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y) {
+  const double r = c.cornerRadius, L = c.fluteLength;
+  // Start below the lowest point of K, where Phi > 0 and (if l hits K) decreasing.
+  const double zMin = cutterSupport(c, a, Vec3{0, 0, -1}).z;
+  double z = zMin - 1e-3 * c.radius - 1e-9;
+
+  LowestPoint out;
+  for (int iter = 0; iter < 200; ++iter) {
+    const Vec3 p{x, y, z};
+    const DistanceToCore d = distanceToCore(c, a, p);
+    double phi = d.value - r;
+    double dphi = d.gradient.z;
+    Vec3 grad = d.gradient;
+    const double top = dot(p, a) - L;
+    if (top > phi) {
+      phi = top;
+      dphi = a.z;
+      grad = a;
+    }
+    if (phi <= 0) {  // reached the boundary (only ever from below, up to round-off)
+      out.hit = true;
+      out.z = z;
+      out.normal = length(grad) > 0 ? normalize(grad) : Vec3{0, 0, -1};
+      return out;
+    }
+    // Phi > 0 and not decreasing: l stays outside K above this point.
+    if (!(dphi < 0)) return out;
+    const double step = -phi / dphi;
+    z += step;
+    if (step < 1e-13 * (1 + std::fabs(z))) {
+      // Converged to within round-off, possibly on a grazing line where Phi' -> 0;
+      // accept only if Phi really reached zero to within the same round-off.
+      if (phi <= 1e-12 * (1 + c.radius)) {
+        out.hit = true;
+        out.z = z;
+        out.normal = normalize(grad);
+      }
+      return out;
+    }
+  }
+  return out;
+}
+
+SweptSegment::SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& end,
+                           const Vec3& axis)
+    : cutter_(cutter), start_(start), end_(end), axis_(axis) {}
+
+Box3 SweptSegment::bounds() const {
+  // The cutter's box from its six axis-aligned support points, at both ends.
+  Box3 box;
+  const Vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const Vec3& dir : dirs) {
+    const Vec3 p = cutterSupport(cutter_, axis_, dir);
+    box.extend(start_ + p);
+    box.extend(end_ + p);
+  }
+  return box;
+}
+
+double SweptSegment::support(const Vec3& dir) const {
+  // h_C(dir) = h_K(dir) + max(0, dir . d): a Minkowski sum adds support functions.
+  const Vec3 d = end_ - start_;
+  return dot(dir, start_ + cutterSupport(cutter_, axis_, dir)) + std::max(0.0, dot(dir, d));
+}
+
+LowestPoint SweptSegment::lowestPoint(double x, double y) const {
+  const Vec3 d = end_ - start_;
+  const double w = std::hypot(d.x, d.y);  // horizontal length of the move
+  const double qx = x - start_.x, qy = y - start_.y;
+
+  // A plunge, a retract or a zero-length move: the cutter slides along l itself.
+  if (w <= 1e-12) {
+    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy);
+    lp.z += start_.z + std::min(0.0, d.z);
+    return lp;
+  }
+
+  // Step 1: the plane P through l parallel to d, in coordinates (u along d_xy, z).
+  const Vec3 uHat{d.x / w, d.y / w, 0};
+  const Vec3 m{-uHat.y, uHat.x, 0};  // unit normal of P
+  const double sigma = d.z / w;      // slope of the move in P
+  const double c = qx * m.x + qy * m.y;
+  const double u0 = qx * uHat.x + qy * uHat.y;
+
+  // Step 3: the support point of S = K n P in direction n = sigma u_hat - z_hat.
+  const Vec3 n = normalize(Vec3{sigma * uHat.x, sigma * uHat.y, -1});
+  auto direction = [&](double theta) { return n * std::cos(theta) + m * std::sin(theta); };
+  double th1 = -kPi / 2, th2 = kPi / 2;
+  Vec3 x1 = cutterSupport(cutter_, axis_, -m);
+  Vec3 x2 = cutterSupport(cutter_, axis_, m);
+  double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
+  if (f1 > 0 || f2 < 0) return {};  // P misses K, so l misses C
+  for (int iter = 0; iter < 80 && th2 - th1 > 1e-15; ++iter) {
+    const double th = 0.5 * (th1 + th2);
+    const Vec3 xm = cutterSupport(cutter_, axis_, direction(th));
+    const double fm = dot(xm, m) - c;
+    if (fm < 0) {
+      th1 = th, x1 = xm, f1 = fm;
+    } else {
+      th2 = th, x2 = xm, f2 = fm;
+    }
+    if (f2 - f1 <= 1e-15) break;
+  }
+  // The chord between the bracketing support points crosses P inside K. On a curved
+  // patch the chord is O(|x2 - x1|^2) inside the surface; across a flat face (where
+  // the support point jumps) it lies on the face, which is exactly the support set.
+  const double lam = f2 > f1 ? -f1 / (f2 - f1) : 0.0;
+  const Vec3 ps = x1 + (x2 - x1) * lam;
+  const double vs = dot(ps, uHat);
+
+  // Step 2: clamp the envelope point to the move.
+  if (vs > u0) {  // the minimiser lies before the start: the cutter at t = 0
+    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy);
+    lp.z += start_.z;
+    return lp;
+  }
+  if (vs < u0 - w) {  // beyond the end: the cutter at t = 1
+    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx - d.x, qy - d.y);
+    lp.z += end_.z;
+    return lp;
+  }
+  LowestPoint out;
+  out.hit = true;
+  out.z = start_.z + ps.z + (u0 - vs) * sigma;
+  out.normal = normalize(direction(0.5 * (th1 + th2)));
+  return out;
+}
+
+}  // namespace scallop

@@ -1,0 +1,59 @@
+// Height images: the files `scallop simulate` writes into its output folder
+// (CONVENTIONS.md, "Height images written by simulate"), and readers for two of them.
+//
+// Every image is north up: image row 0 (the first row stored) is the *largest* y,
+// i.e. ZMap row j = ny - 1, so the picture is the part seen from above with +X to
+// the right. All writers go through AtomicFile, so a failure never leaves a partial
+// file, and they throw scallop::InputError naming the path on any error.
+//
+// heights.exr  OpenEXR, one float32 channel "Z" = absolute height in mm, zip
+//              compressed. The grid is in the header as double attributes
+//              "scallop:origin_x", "scallop:origin_y" (the grid's minimum corner, mm)
+//              and "scallop:spacing_mm" (cell side), plus a human "ImageDescription".
+//
+// heights.gsf  Gwyddion Simple Field: the magic line "Gwyddion Simple Field 1.0",
+//              "Key = Value" lines (XRes, YRes, XReal, YReal, XOffset, YOffset,
+//              XYUnits = m, ZUnits = m, Title), 1-4 NUL bytes so the header length is
+//              a multiple of 4, then XRes*YRes little-endian float32 heights in metres,
+//              row by row, first row = largest y. Gwyddion draws the first row at the
+//              top, so the picture matches heights.exr; note that Gwyddion's own y
+//              axis points down from YOffset, so a Gwyddion y coordinate yg maps to
+//              our y = 2*YOffset + YReal - yg (in metres).
+//
+// preview.png  8-bit RGB picture for people: viridis colour map times hill-shading
+//              (light from the north-west), a colour bar with height ticks and a
+//              scale bar. Not meant to be read back.
+#pragma once
+
+#include <string>
+
+#include "raycast/zmap.h"
+
+namespace scallop {
+
+struct PreviewOptions {
+  // Longest side of the map part of the picture, px. Larger maps are reduced by an
+  // integer factor taking the *minimum* height of each block: on a machined surface
+  // the deepest point of a cell is what a cutter left, and it keeps cusps visible.
+  int maxPixels = 1600;
+  // Small maps are enlarged by an integer factor until the longest side reaches
+  // this, px, so that the legend text is not larger than the map.
+  int minPixels = 400;
+  // Drawn above the map with the built-in font (letters are shown upper-case).
+  std::string title;
+};
+
+void writeHeightsExr(const ZMap& map, const std::string& path);
+void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string& title);
+void writePreviewPng(const ZMap& map, const std::string& path,
+                     const PreviewOptions& options = PreviewOptions());
+
+// Read back what the writers above produce (also any single-channel float image or
+// GSF with the same metadata). The GridSpec comes from the metadata: for GSF,
+// spacing = XReal / XRes (m -> mm) and origin = (XOffset, YOffset). Heights are
+// float32 in the files, so they round-trip to float precision only.
+// Throw InputError(path, ...) for unreadable or inconsistent files.
+ZMap readHeightsExr(const std::string& path);
+ZMap readHeightsGsf(const std::string& path);
+
+}  // namespace scallop
