@@ -1,0 +1,29 @@
+// simulate(): tool path -> swept segments -> scene -> z-map, the whole exact pipeline.
+#pragma once
+
+#include "raycast/swept_scene.h"
+#include "raycast/zmap.h"
+#include "raycast/zmap_caster.h"
+#include "sweep/cutter.h"
+#include "sweep/pose.h"
+#include "sweep/tool_path_sweep.h"
+
+namespace scallop {
+
+struct SimulationOptions {
+  SweepOptions sweep;
+  double tileSize = 0;  // scene culling tile, mm (SceneOptions::tileSize)
+  CastOptions cast;
+};
+
+struct SimulationResult {
+  ZMap map;
+  SceneStats scene;
+  CastStats cast;
+};
+
+// Heights of `stock` (its top is the initial height) after `path`, on `grid`.
+SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                          const GridSpec& grid, const SimulationOptions& options = {});
+
+}  // namespace scallop

@@ -1,0 +1,239 @@
+// The Embree side of scallop, walked through once (after Embree's minimal tutorial):
+// a device, one scene, one user geometry whose primitives are (segment, xy tile)
+// boxes, a bounds callback that hands Embree those boxes, and an intersect callback
+// that runs the exact double-precision height and shortens the ray.
+#include "raycast/swept_scene.h"
+
+#include <embree3/rtcore.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace scallop {
+
+namespace {
+
+// A tile primitive: its Embree box (world coordinates, float) and its segment.
+struct TileBox {
+  float lower[3];
+  float upper[3];
+  uint32_t segment;
+};
+
+// Slack that absorbs float rounding of a coordinate of magnitude |v| (mm): a few float
+// ulps plus a nanometre. Culling must stay conservative after conversion to float.
+float slack(double v) { return float(8.0 * std::fabs(v) * 0x1p-23 + 1e-6); }
+float roundDown(double v) { return std::nextafter(float(v), -HUGE_VALF) - slack(v); }
+float roundUp(double v) { return std::nextafter(float(v), HUGE_VALF) + slack(v); }
+
+// The ray's context carries the exact (double) cell centre and the best height so far;
+// Embree hands it back to the intersect callback (the first member must be Embree's).
+struct CellContext {
+  RTCIntersectContext embree;
+  double x, y;       // exact cell centre, mm
+  double originZ;    // the ray starts here, below every box
+  double best;       // lowest exact height found so far, mm
+  uint64_t evaluations;
+};
+
+}  // namespace
+
+struct SweptScene::Impl {
+  std::vector<SweptSegment> segments;
+  std::vector<TileBox> tiles;
+  SceneStats stats;
+  double originZ = 0;
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::string lastError;
+
+  void buildTiles(const SceneOptions& options);
+  void buildEmbree();
+};
+
+namespace {
+
+void boundsCallback(const RTCBoundsFunctionArguments* args) {
+  const auto* impl = static_cast<const SweptScene::Impl*>(args->geometryUserPtr);
+  const TileBox& t = impl->tiles[args->primID];
+  RTCBounds* b = args->bounds_o;
+  b->lower_x = t.lower[0], b->lower_y = t.lower[1], b->lower_z = t.lower[2];
+  b->upper_x = t.upper[0], b->upper_y = t.upper[1], b->upper_z = t.upper[2];
+}
+
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+  // scallop only traces single rays (rtcIntersect1), so N == 1.
+  if (!args->valid[0]) return;
+  const auto* impl = static_cast<const SweptScene::Impl*>(args->geometryUserPtr);
+  auto* cell = reinterpret_cast<CellContext*>(args->context);
+  const SweptSegment& seg = impl->segments[impl->tiles[args->primID].segment];
+  ++cell->evaluations;
+  const LowestPoint lp = seg.lowestPoint(cell->x, cell->y);
+  if (!lp.hit || !(lp.z < cell->best)) return;
+  cell->best = lp.z;
+  // Shorten the ray to (just above) the new best: boxes that start higher are culled,
+  // while any segment that could still be lower has a box starting below it.
+  auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
+  rayhit->ray.tfar = roundUp(lp.z - cell->originZ);
+  rayhit->hit.geomID = args->geomID;
+  rayhit->hit.primID = args->primID;
+}
+
+// Embree reports errors through a C callback; exceptions must not cross it, so the
+// message is kept and thrown after the call returns.
+void deviceError(void* user, RTCError code, const char* message) {
+  auto* last = static_cast<std::string*>(user);
+  *last = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+}
+
+}  // namespace
+
+// --- Building the culling tiles -------------------------------------------------------
+// For one segment, over one tile: the swept solid C is convex, so every plane with a
+// downward normal N through C's support value h_C(N) lies below all of C; on the tile
+// its lowest value is at a corner. The normals come from exact lowest points at the
+// tile's centre and corners (each one's supporting plane is tight there).
+void SweptScene::Impl::buildTiles(const SceneOptions& options) {
+  const double stockTop = options.stockTop;
+  std::vector<std::vector<TileBox>> perSegment(segments.size());
+  std::vector<size_t> evalsPerSegment(segments.size(), 0);
+  tbb::parallel_for(size_t(0), segments.size(), [&](size_t k) {
+    const SweptSegment& seg = segments[k];
+    const Box3 box = seg.bounds();
+    if (box.min.z >= stockTop) return;  // never below the stock top: cannot cut
+    const double T = options.tileSize > 0 ? options.tileSize : seg.cutter().radius / 8;
+    const int nx = std::max(1, int(std::ceil((box.max.x - box.min.x) / T)));
+    const int ny = std::max(1, int(std::ceil((box.max.y - box.min.y) / T)));
+    const double tx = (box.max.x - box.min.x) / nx, ty = (box.max.y - box.min.y) / ny;
+
+    // The footprint's support in 16 horizontal directions, to drop tiles it misses.
+    constexpr int kDirs = 16;
+    double footprint[kDirs];
+    Vec3 dirs[kDirs];
+    for (int i = 0; i < kDirs; ++i) {
+      const double a = 2 * 3.14159265358979323846 * i / kDirs;
+      dirs[i] = {std::cos(a), std::sin(a), 0};
+      footprint[i] = seg.support(dirs[i]);
+    }
+
+    std::vector<TileBox>& out = perSegment[k];
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const double x0 = box.min.x + i * tx, x1 = i + 1 == nx ? box.max.x : x0 + tx;
+        const double y0 = box.min.y + j * ty, y1 = j + 1 == ny ? box.max.y : y0 + ty;
+        const double cx[4] = {x0, x1, x0, x1}, cy[4] = {y0, y0, y1, y1};
+        bool disjoint = false;
+        for (int d = 0; d < kDirs && !disjoint; ++d) {
+          double lo = HUGE_VAL;
+          for (int c = 0; c < 4; ++c) lo = std::min(lo, dirs[d].x * cx[c] + dirs[d].y * cy[c]);
+          disjoint = lo > footprint[d] + 1e-9;
+        }
+        if (disjoint) continue;
+
+        double lower = box.min.z;
+        const double sx[5] = {0.5 * (x0 + x1), x0, x1, x0, x1};
+        const double sy[5] = {0.5 * (y0 + y1), y0, y0, y1, y1};
+        for (int s = 0; s < 5; ++s) {
+          const LowestPoint lp = seg.lowestPoint(sx[s], sy[s]);
+          ++evalsPerSegment[k];
+          if (!lp.hit || lp.normal.z > -1e-3) continue;
+          const Vec3& N = lp.normal;
+          const double h = seg.support(N);
+          double planeMin = HUGE_VAL;
+          for (int c = 0; c < 4; ++c)
+            planeMin = std::min(planeMin, (h - N.x * cx[c] - N.y * cy[c]) / N.z);
+          lower = std::max(lower, planeMin);
+        }
+        if (lower >= stockTop) continue;  // the whole tile stays above the stock
+        TileBox t;
+        t.lower[0] = roundDown(x0), t.lower[1] = roundDown(y0), t.lower[2] = roundDown(lower);
+        t.upper[0] = roundUp(x1), t.upper[1] = roundUp(y1);
+        t.upper[2] = std::max(t.lower[2], roundUp(std::min(box.max.z, stockTop)));
+        t.segment = uint32_t(k);
+        out.push_back(t);
+      }
+    }
+  });
+  // Concatenate in segment order so the scene is the same whatever the threads did.
+  for (size_t k = 0; k < perSegment.size(); ++k) {
+    tiles.insert(tiles.end(), perSegment[k].begin(), perSegment[k].end());
+    stats.boundEvaluations += evalsPerSegment[k];
+  }
+  stats.tiles = tiles.size();
+}
+
+void SweptScene::Impl::buildEmbree() {
+  device = rtcNewDevice(nullptr);
+  if (!device) throw std::runtime_error("Embree: cannot create a device");
+  rtcSetDeviceErrorFunction(device, deviceError, &lastError);
+  scene = rtcNewScene(device);
+  // Robust traversal: a vertical ray exactly on a box face must not slip through.
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geom, unsigned(tiles.size()));
+  rtcSetGeometryUserData(geom, this);
+  rtcSetGeometryBoundsFunction(geom, boundsCallback, this);
+  rtcSetGeometryIntersectFunction(geom, intersectCallback);
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(scene);
+  if (rtcGetDeviceError(device) != RTC_ERROR_NONE || !lastError.empty())
+    throw std::runtime_error(lastError.empty() ? "Embree: scene build failed" : lastError);
+}
+
+SweptScene::SweptScene(std::vector<SweptSegment> segments, const SceneOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  const auto t0 = std::chrono::steady_clock::now();
+  impl_->segments = std::move(segments);
+  if (impl_->segments.size() > UINT32_MAX) throw std::runtime_error("too many segments");
+  impl_->stats.segments = impl_->segments.size();
+  double zMin = options.stockTop;
+  for (const SweptSegment& s : impl_->segments) zMin = std::min(zMin, s.bounds().min.z);
+  impl_->originZ = zMin - 1;
+  impl_->buildTiles(options);
+  impl_->buildEmbree();
+  impl_->stats.buildSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+SweptScene::~SweptScene() {
+  if (impl_->scene) rtcReleaseScene(impl_->scene);
+  if (impl_->device) rtcReleaseDevice(impl_->device);
+}
+
+const std::vector<SweptSegment>& SweptScene::segments() const { return impl_->segments; }
+const SceneStats& SweptScene::stats() const { return impl_->stats; }
+
+double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& evaluations) const {
+  if (impl_->tiles.empty()) return ceiling;
+  CellContext cell;
+  rtcInitIntersectContext(&cell.embree);
+  cell.x = x, cell.y = y;
+  cell.originZ = impl_->originZ;
+  cell.best = ceiling;
+  cell.evaluations = 0;
+
+  RTCRayHit rh;
+  rh.ray.org_x = float(x), rh.ray.org_y = float(y), rh.ray.org_z = float(impl_->originZ);
+  rh.ray.dir_x = 0, rh.ray.dir_y = 0, rh.ray.dir_z = 1;
+  rh.ray.tnear = 0;
+  rh.ray.tfar = roundUp(ceiling - impl_->originZ);
+  rh.ray.time = 0;
+  rh.ray.mask = ~0u;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &cell.embree, &rh);
+  evaluations += cell.evaluations;
+  return std::min(cell.best, ceiling);
+}
+
+}  // namespace scallop

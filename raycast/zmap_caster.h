@@ -1,0 +1,29 @@
+// Casting a ZMap: one exact height per cell, computed in parallel over tiles of cells.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "raycast/swept_scene.h"
+#include "raycast/zmap.h"
+
+namespace scallop {
+
+struct CastOptions {
+  int64_t tileCells = 64;  // cells per side of a parallel work item
+  // Called from worker threads (serialised) with cells done so far and the total.
+  std::function<void(int64_t done, int64_t total)> progress;
+};
+
+struct CastStats {
+  int64_t cells = 0;
+  uint64_t exactEvaluations = 0;
+  double seconds = 0;
+  double evaluationsPerCell() const { return cells ? double(exactEvaluations) / cells : 0; }
+};
+
+// Lowers every cell of `map` to the lowest swept height at its centre. The result does
+// not depend on the number of threads: each cell is an independent minimum.
+CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& options = {});
+
+}  // namespace scallop

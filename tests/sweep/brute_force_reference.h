@@ -1,0 +1,90 @@
+// Brute-force reference for the swept-solid heights, used only by the tests.
+//
+// It is written from the definition of the cutter solid in CONVENTIONS.md ("Cutters")
+// and shares no code with sweep/*.cpp: the only things it takes from the project are
+// Vec3 (a plain vector) and the CutterType enum. It is deliberately slow and simple:
+//
+//   * Point membership: tool frame s = (p - tip)·a, rho = |(p - tip) - s a|; inside iff
+//     0 <= s <= L and rho <= prof(s) with prof(s) = Rb + sqrt(r^2 - (r - s)^2) for
+//     s < r and R above.
+//   * On a vertical line, depth(z) = prof(s(z)) - rho(z) is concave on the z interval
+//     where 0 <= s <= L (prof is concave in s, rho is convex in z, s is affine in z).
+//     So golden-section search finds the deepest z (an interior point if any), and
+//     bisection between the bottom of that interval and the deepest z finds the
+//     lowest boundary crossing. No dense scan that could step over a thin chord.
+//   * Along a move, depth is jointly concave in (t, z) and the lowest z is jointly
+//     convex, so the same two tools give the hit interval in t and the minimum over
+//     t; a dense grid over t is evaluated as well and the answer is the smallest
+//     height actually evaluated (every evaluated height is a real lowest point of a
+//     real cutter position, so the reference can only err upwards, by the
+//     golden-section resolution, which is far below 1e-9 mm).
+#pragma once
+
+#include <vector>
+
+#include "sweep/cutter.h"
+#include "sweep/vec3.h"
+
+namespace scallop {
+namespace ref {
+
+// Cutter parameters as the definition uses them: ball r = R, flat r = 0.
+struct RefCutter {
+  double R = 0;  // radius, mm
+  double r = 0;  // corner radius, mm
+  double L = 0;  // flute length, mm
+  double Rb() const { return R - r; }
+};
+
+// `cornerRadius` is used for bull only; `fluteLength` <= 0 means 4 R.
+RefCutter makeRefCutter(CutterType type, double radius, double cornerRadius = 0,
+                        double fluteLength = 0);
+
+// prof(s): radius of the solid at height s along the axis; only for 0 <= s <= L.
+double profile(const RefCutter& c, double s);
+
+// Point-in-solid test straight from the definition, for the cutter with its tip at
+// `tip` and unit axis `axis`. `tol` (mm) widens the solid: s in [-tol, L + tol] and
+// rho <= prof(clamp(s)) + tol.
+bool inside(const RefCutter& c, const Vec3& tip, const Vec3& axis, const Vec3& p,
+            double tol = 0);
+
+struct RefHit {
+  bool hit = false;
+  double z = 0;  // mm, valid when hit
+};
+
+// Lowest point of the stationary cutter (tip at `tip`) on the vertical line (x, y).
+RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x,
+                        double y);
+
+// Lowest point on the vertical line (x, y) of the solid swept by the cutter whose tip
+// moves straight from `start` to `end` with the fixed unit axis `axis`.
+RefHit sweptLowest(const RefCutter& c, const Vec3& start, const Vec3& end,
+                   const Vec3& axis, double x, double y);
+
+struct RefMove {
+  Vec3 start, end, axis;
+};
+
+// Lowest point of the union of the swept solids of several moves (min over moves).
+RefHit unionLowest(const RefCutter& c, const std::vector<RefMove>& moves, double x,
+                   double y);
+
+// Support value of the stationary cutter (tip at origin): max over the solid of
+// dot(dir, q). `dir` need not be unit.
+double supportValue(const RefCutter& c, const Vec3& axis, const Vec3& dir);
+
+// Support value of the swept solid: the move adds max(dot(dir, start), dot(dir, end)).
+double sweptSupportValue(const RefCutter& c, const Vec3& start, const Vec3& end,
+                         const Vec3& axis, const Vec3& dir);
+
+// Cusp (scallop) height between passes: along the horizontal segment from (x0, y0) to
+// (x1, y1), the highest lowest-point of the union of `moves` minus the lowest one.
+// Dense sampling followed by golden-section refinement at both extremes. Returns a
+// negative value if some sample misses the union (the segment is not fully cut).
+double cuspHeight(const RefCutter& c, const std::vector<RefMove>& moves, double x0,
+                  double y0, double x1, double y1, int samples = 2001);
+
+}  // namespace ref
+}  // namespace scallop
