@@ -1,14 +1,14 @@
 #include "tools/atomic_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include "sweep/input_error.h"
 
@@ -18,7 +18,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string osReason(int err) { return std::strerror(err); }
+std::string osReason(int err) {
+  return std::strerror(err);
+}
 
 // A process-wide counter keeps two AtomicFiles for the same path (e.g. from two
 // threads) from sharing a temporary name.
@@ -26,9 +28,8 @@ std::atomic<unsigned> tempCounter{0};
 
 std::string tempNameFor(const std::string& path) {
   const fs::path p(path);
-  const std::string name =
-      "." + p.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-      std::to_string(tempCounter.fetch_add(1));
+  const std::string name = "." + p.filename().string() + ".tmp-" + std::to_string(::getpid()) +
+                           "-" + std::to_string(tempCounter.fetch_add(1));
   return (p.parent_path() / name).string();
 }
 
@@ -47,7 +48,9 @@ int syncFile(const std::string& path) {
 
 }  // namespace
 
-AtomicFile::~AtomicFile() { discard(); }
+AtomicFile::~AtomicFile() {
+  discard();
+}
 
 const std::string& AtomicFile::open(const std::string& path) {
   discard();
@@ -75,8 +78,8 @@ void AtomicFile::commit() {
   if (std::rename(tempPath_.c_str(), path_.c_str()) != 0) {
     const int err = errno;
     discard();
-    throw InputError(path_, "cannot rename the finished temporary file into place: " +
-                                osReason(err));
+    throw InputError(path_,
+                     "cannot rename the finished temporary file into place: " + osReason(err));
   }
   tempPath_.clear();
 }

@@ -1,6 +1,9 @@
 // OpenEXR and Gwyddion Simple Field writers and readers (formats: height_images.h).
 #include "tools/height_images.h"
 
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -12,9 +15,6 @@
 #include <map>
 #include <memory>
 #include <vector>
-
-#include <OpenImageIO/imageio.h>
-#include <fmt/format.h>
 
 #include "sweep/input_error.h"
 #include "tools/atomic_file.h"
@@ -33,8 +33,7 @@ constexpr const char* kGsfMagic = "Gwyddion Simple Field 1.0\n";
 constexpr int64_t kRowsPerChunk = 256;
 
 void checkWritable(const ZMap& map, const std::string& path) {
-  if (map.nx() <= 0 || map.ny() <= 0)
-    throw InputError(path, "cannot write an empty height map");
+  if (map.nx() <= 0 || map.ny() <= 0) throw InputError(path, "cannot write an empty height map");
   // OpenEXR and GSF store sizes as 32-bit ints.
   if (map.nx() > INT32_MAX || map.ny() > INT32_MAX)
     throw InputError(path, fmt::format("height map of {} x {} cells is too large for an image",
@@ -58,7 +57,8 @@ std::string describeGrid(const GridSpec& g) {
 // Reads a number stored by us as double, or by someone else as float or text.
 bool numberAttribute(const OIIO::ImageSpec& spec, const char* name, double& value) {
   const OIIO::TypeDesc type = spec.getattributetype(name);
-  if (type == OIIO::TypeDesc::DOUBLE) return spec.getattribute(name, OIIO::TypeDesc::DOUBLE, &value);
+  if (type == OIIO::TypeDesc::DOUBLE)
+    return spec.getattribute(name, OIIO::TypeDesc::DOUBLE, &value);
   if (type == OIIO::TypeDesc::FLOAT) {
     float f = 0;
     if (!spec.getattribute(name, OIIO::TypeDesc::FLOAT, &f)) return false;
@@ -120,7 +120,8 @@ double metresPerUnit(const std::string& path, const std::string& key, const std:
   if (unit == "mm") return 1e-3;
   if (unit == "um" || unit == "\xC2\xB5m") return 1e-6;
   if (unit == "nm") return 1e-9;
-  throw InputError(path, fmt::format("header field {} = '{}': expected m, mm, um or nm", key, unit));
+  throw InputError(path,
+                   fmt::format("header field {} = '{}': expected m, mm, um or nm", key, unit));
 }
 
 }  // namespace
@@ -166,8 +167,9 @@ ZMap readHeightsExr(const std::string& path) {
   g.ny = spec.height;
   if (!numberAttribute(spec, kOriginX, g.originX) || !numberAttribute(spec, kOriginY, g.originY) ||
       !numberAttribute(spec, kSpacing, g.spacing))
-    throw InputError(path, fmt::format("missing grid attributes {}, {}, {} (not a scallop height map?)",
-                                       kOriginX, kOriginY, kSpacing));
+    throw InputError(path,
+                     fmt::format("missing grid attributes {}, {}, {} (not a scallop height map?)",
+                                 kOriginX, kOriginY, kSpacing));
   if (!(g.spacing > 0) || !std::isfinite(g.spacing))
     throw InputError(path, fmt::format("{} must be a positive number", kSpacing));
 
@@ -188,8 +190,9 @@ void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string
 
   std::string header = kGsfMagic;
   header += fmt::format("XRes = {}\nYRes = {}\n", g.nx, g.ny);
-  header += fmt::format("XReal = {:.17g}\nYReal = {:.17g}\n", double(g.nx) * g.spacing * kMetrePerMm,
-                        double(g.ny) * g.spacing * kMetrePerMm);
+  header +=
+      fmt::format("XReal = {:.17g}\nYReal = {:.17g}\n", double(g.nx) * g.spacing * kMetrePerMm,
+                  double(g.ny) * g.spacing * kMetrePerMm);
   header += fmt::format("XOffset = {:.17g}\nYOffset = {:.17g}\n", g.originX * kMetrePerMm,
                         g.originY * kMetrePerMm);
   header += "XYUnits = m\nZUnits = m\n";
@@ -199,7 +202,8 @@ void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string
 
   writeFileAtomically(path, [&](const std::string& temp) {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path, "cannot open for writing: " + std::string(std::strerror(errno)));
+    if (!out)
+      throw InputError(path, "cannot open for writing: " + std::string(std::strerror(errno)));
     out.write(header.data(), std::streamsize(header.size()));
     std::vector<float> row(size_t(g.nx));
     std::vector<unsigned char> bytes(row.size() * 4);
@@ -220,7 +224,8 @@ ZMap readHeightsGsf(const std::string& path) {
                                    std::istreambuf_iterator<char>());
   const size_t magicSize = std::strlen(kGsfMagic);
   if (bytes.size() < magicSize || std::memcmp(bytes.data(), kGsfMagic, magicSize) != 0)
-    throw InputError(path, "not a Gwyddion Simple Field file (expected the line 'Gwyddion Simple Field 1.0')");
+    throw InputError(
+        path, "not a Gwyddion Simple Field file (expected the line 'Gwyddion Simple Field 1.0')");
   const auto nul = std::find(bytes.begin() + long(magicSize), bytes.end(), 0);
   if (nul == bytes.end()) throw InputError(path, "GSF header is not terminated by NUL");
   const size_t headerEnd = size_t(nul - bytes.begin());
@@ -251,8 +256,10 @@ ZMap readHeightsGsf(const std::string& path) {
     throw InputError(path, "header fields XRes and YRes must be positive integers");
   g.nx = int64_t(xres);
   g.ny = int64_t(yres);
-  const double xyScale = metresPerUnit(path, "XYUnits", keys.count("XYUnits") ? keys["XYUnits"] : "") * 1e3;
-  const double zScale = metresPerUnit(path, "ZUnits", keys.count("ZUnits") ? keys["ZUnits"] : "") * 1e3;
+  const double xyScale =
+      metresPerUnit(path, "XYUnits", keys.count("XYUnits") ? keys["XYUnits"] : "") * 1e3;
+  const double zScale =
+      metresPerUnit(path, "ZUnits", keys.count("ZUnits") ? keys["ZUnits"] : "") * 1e3;
   // Gwyddion's defaults for missing real sizes/offsets are 1 and 0.
   const double xreal = parseGsfNumber(path, keys, "XReal", 1.0) * xyScale;
   const double yreal = parseGsfNumber(path, keys, "YReal", 1.0) * xyScale;
@@ -261,14 +268,16 @@ ZMap readHeightsGsf(const std::string& path) {
   g.spacing = xreal / double(g.nx);
   const double dy = yreal / double(g.ny);
   if (!(g.spacing > 0) || std::abs(dy - g.spacing) > 1e-9 * g.spacing)
-    throw InputError(path, fmt::format("cells are not square (XReal/XRes = {:.17g} mm, YReal/YRes = "
-                                       "{:.17g} mm); a height map needs square cells",
-                                       g.spacing, dy));
+    throw InputError(path,
+                     fmt::format("cells are not square (XReal/XRes = {:.17g} mm, YReal/YRes = "
+                                 "{:.17g} mm); a height map needs square cells",
+                                 g.spacing, dy));
 
   const uint64_t expected = uint64_t(dataStart) + 4ull * uint64_t(g.nx) * uint64_t(g.ny);
   if (bytes.size() != expected)
-    throw InputError(path, fmt::format("file is {} bytes; header and {} x {} float32 values need {}",
-                                       bytes.size(), g.nx, g.ny, expected));
+    throw InputError(path,
+                     fmt::format("file is {} bytes; header and {} x {} float32 values need {}",
+                                 bytes.size(), g.nx, g.ny, expected));
   ZMap map(g, 0.0);
   const unsigned char* p = bytes.data() + dataStart;
   for (int64_t row = 0; row < g.ny; ++row)

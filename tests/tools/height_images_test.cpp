@@ -1,6 +1,10 @@
 // Height image writers and readers (tools/height_images.h) and atomic output
 // (tools/atomic_file.h): values, row order, metadata, file layout, failure cleanup.
+#include "tools/height_images.h"
+
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -16,13 +20,9 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-#include <unistd.h>
-
 #include "raycast/zmap.h"
 #include "sweep/input_error.h"
 #include "tools/atomic_file.h"
-#include "tools/height_images.h"
 
 namespace scallop {
 namespace {
@@ -30,7 +30,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // Distinct in i and j and not separable, so a transposed or flipped file is caught.
-double knownHeight(int64_t i, int64_t j) { return -0.5 + 0.1 * i - 0.01 * j + 0.001 * i * j; }
+double knownHeight(int64_t i, int64_t j) {
+  return -0.5 + 0.1 * i - 0.01 * j + 0.001 * i * j;
+}
 
 ZMap makeMap() {
   GridSpec g;
@@ -51,7 +53,8 @@ std::vector<unsigned char> readBytes(const fs::path& p) {
 }
 
 float floatLE(const unsigned char* p) {
-  uint32_t bits = uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+  uint32_t bits =
+      uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
   float f;
   std::memcpy(&f, &bits, 4);
   return f;

@@ -1,0 +1,141 @@
+#include "tools/simulate_command.h"
+
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fmt/core.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "analysis/scallop_profile.h"
+#include "raycast/simulation.h"
+#include "sweep/input_error.h"
+#include "tools/atomic_file.h"
+#include "tools/height_images.h"
+#include "tools/job.h"
+#include "tools/progress.h"
+
+namespace scallop {
+
+using nlohmann::json;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// For a raster: the highest point left above the floor between the first and the last
+// pass (where both neighbours have cut), i.e. the largest scallop on the map, mm.
+json rasterMeasurements(const Job& job, const ZMap& map) {
+  json m;
+  const double floorZ = job.stock.max.z - job.raster.depth;
+  m["floor_z"] = floorZ;
+  const bool alongX = job.raster.direction == 'x';
+  const double crossMin = alongX ? job.stock.min.y : job.stock.min.x;
+  const double crossMax = alongX ? job.stock.max.y : job.stock.max.x;
+  const int passes = int(std::floor((crossMax - crossMin) / job.raster.stepOver + 1e-9)) + 1;
+  if (passes < 2) return m;
+  const double lastPass = crossMin + (passes - 1) * job.raster.stepOver;
+  double top = -HUGE_VAL;
+  const GridSpec& g = map.grid();
+  for (int64_t j = 0; j < g.ny; ++j) {
+    for (int64_t i = 0; i < g.nx; ++i) {
+      const double c = alongX ? g.cellCentreY(j) : g.cellCentreX(i);
+      if (c >= crossMin && c <= lastPass) top = std::max(top, map.at(i, j));
+    }
+  }
+  m["max_scallop_height"] = top - floorZ;
+  return m;
+}
+
+}  // namespace
+
+int runSimulate(const SimulateArgs& args) {
+  const auto tStart = std::chrono::steady_clock::now();
+  Job job = args.jobFile.empty() ? parseJob(defaultJobJson(), "built-in default job")
+                                 : loadJobFile(args.jobFile);
+  // Fail before the long computation, not after it.
+  ensureWritableDirectory(args.outDir);
+
+  const GridSpec grid = job.grid();
+  if (!args.json)
+    std::fprintf(stderr, "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
+                 job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
+                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing);
+
+  SimulationOptions options;
+  options.sweep.axisTolerance = job.axisTolerance;
+  ProgressBar bar("simulating");
+  options.cast.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
+  const SimulationResult sim = simulate(job.cutter, job.path, job.stock, grid, options);
+  bar.finish();
+
+  // --- Outputs, each written to a temporary name and renamed when complete. ---------
+  namespace fs = std::filesystem;
+  const auto tWrite = std::chrono::steady_clock::now();
+  const std::string title = "scallop " + std::string(toString(job.cutter.type)) + " R=" +
+                            fmt::format("{:g}", job.cutter.radius) + " MM";
+  const std::string exr = (fs::path(args.outDir) / "heights.exr").string();
+  const std::string gsf = (fs::path(args.outDir) / "heights.gsf").string();
+  const std::string png = (fs::path(args.outDir) / "preview.png").string();
+  const std::string report = (fs::path(args.outDir) / "report.json").string();
+  writeHeightsExr(sim.map, exr);
+  writeHeightsGsf(sim.map, gsf, title);
+  PreviewOptions preview;
+  preview.title = title;
+  writePreviewPng(sim.map, png, preview);
+  const double writeSeconds = secondsSince(tWrite);
+
+  json r;
+  r["scallop_version"] = "0.1.0";
+  r["job_source"] = job.source;
+  r["inputs"] = jobToJson(job);
+  r["grid"] = {{"origin", {grid.originX, grid.originY}},
+               {"spacing", grid.spacing},
+               {"nx", grid.nx},
+               {"ny", grid.ny},
+               {"cell_centre", "origin + (index + 1/2) * spacing"},
+               {"units", "mm"}};
+  r["sweep"] = {{"cutting_moves", job.path.cuttingMoves()},
+                {"swept_segments", sim.scene.segments},
+                {"axis_tolerance_mm", job.axisTolerance},
+                {"culling_tiles", sim.scene.tiles}};
+  r["timings_s"] = {{"scene_build", sim.scene.buildSeconds},
+                    {"cast", sim.cast.seconds},
+                    {"write", writeSeconds},
+                    {"total", secondsSince(tStart)}};
+  r["threads"] = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
+  json meas = {{"min_height", sim.map.minHeight()},
+               {"max_height", sim.map.maxHeight()},
+               {"exact_evaluations_per_cell", sim.cast.evaluationsPerCell()},
+               {"mcells_per_s", sim.cast.seconds > 0 ? sim.cast.cells / sim.cast.seconds / 1e6 : 0.0}};
+  if (job.isRaster) meas.update(rasterMeasurements(job, sim.map));
+  r["measurements"] = meas;
+  r["outputs"] = {"heights.exr", "heights.gsf", "preview.png", "report.json"};
+  const std::string reportText = r.dump(2) + "\n";
+  writeFileAtomically(report, [&](const std::string& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << reportText;
+    if (!out.flush()) throw InputError(report, "cannot write the report");
+  });
+
+  if (args.json) {
+    std::fputs(reportText.c_str(), stdout);
+  } else {
+    std::printf("heights: %lld x %lld cells, z in [%.6f, %.6f] mm, %.2f exact evaluations per cell, %.2f s\n",
+                (long long)grid.nx, (long long)grid.ny, sim.map.minHeight(), sim.map.maxHeight(),
+                sim.cast.evaluationsPerCell(), sim.cast.seconds);
+    if (meas.contains("max_scallop_height"))
+      std::printf("largest scallop between passes: %.6f mm\n", meas["max_scallop_height"].get<double>());
+    std::printf("wrote %s\n      %s\n      %s\n      %s\n", exr.c_str(), gsf.c_str(), png.c_str(),
+                report.c_str());
+  }
+  return 0;
+}
+
+}  // namespace scallop
