@@ -1,0 +1,20 @@
+#!/bin/sh
+# Installs the Debian 12 packages scallop builds and tests with. Idempotent: does
+# nothing when they are already there. Needs root (or sudo).
+set -eu
+PACKAGES="cmake ninja-build g++ ccache pkg-config \
+  libembree-dev libtbb-dev libeigen3-dev libopenimageio-dev openimageio-tools \
+  libcli11-dev nlohmann-json3-dev libfmt-dev libgtest-dev libbenchmark-dev"
+
+missing=""
+for p in $PACKAGES; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+
+echo "scallop: installing Debian packages:$missing" >&2
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends $missing

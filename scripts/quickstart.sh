@@ -1,0 +1,9 @@
+#!/bin/sh
+# Quick start: install, build, and run the main job (the built-in default job:
+# a bull cutter raster with lead) writing its height images into out/main/.
+set -eu
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+./scripts/build.sh
+./build/scallop simulate -o out/main "$@"
+echo "scallop: the height images are in $(pwd)/out/main/ (heights.exr, heights.gsf, preview.png, report.json)"
