@@ -48,8 +48,8 @@ void imageRow(const ZMap& map, int64_t row, double scale, float* out) {
 
 std::string describeGrid(const GridSpec& g) {
   return fmt::format(
-      "scallop height map: Z = absolute height in mm; {} x {} cells of {:.17g} mm; "
-      "cell (i, j) centre = ({:.17g} + (i + 0.5) s, {:.17g} + (j + 0.5) s) mm; "
+      "scallop height map: Z = absolute height in mm; {} x {} cells of {} mm; "
+      "cell (i, j) centre = ({} + (i + 0.5) s, {} + (j + 0.5) s) mm; "
       "image row 0 is the largest y (north up)",
       g.nx, g.ny, g.spacing, g.originX, g.originY);
 }
@@ -188,13 +188,14 @@ void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string
   const GridSpec& g = map.grid();
   constexpr double kMetrePerMm = 1e-3;
 
+  // Numbers use fmt's shortest representation that reads back to the same double
+  // (as exact as "%.17g", without its noise digits: 0.000875, not 0.00087500000000000002).
   std::string header = kGsfMagic;
   header += fmt::format("XRes = {}\nYRes = {}\n", g.nx, g.ny);
+  header += fmt::format("XReal = {}\nYReal = {}\n", double(g.nx) * g.spacing * kMetrePerMm,
+                        double(g.ny) * g.spacing * kMetrePerMm);
   header +=
-      fmt::format("XReal = {:.17g}\nYReal = {:.17g}\n", double(g.nx) * g.spacing * kMetrePerMm,
-                  double(g.ny) * g.spacing * kMetrePerMm);
-  header += fmt::format("XOffset = {:.17g}\nYOffset = {:.17g}\n", g.originX * kMetrePerMm,
-                        g.originY * kMetrePerMm);
+      fmt::format("XOffset = {}\nYOffset = {}\n", g.originX * kMetrePerMm, g.originY * kMetrePerMm);
   header += "XYUnits = m\nZUnits = m\n";
   header += "Title = " + oneLine(title) + "\n";
   // 1 to 4 NULs: at least one terminates the text even when it is already aligned.
@@ -268,10 +269,9 @@ ZMap readHeightsGsf(const std::string& path) {
   g.spacing = xreal / double(g.nx);
   const double dy = yreal / double(g.ny);
   if (!(g.spacing > 0) || std::abs(dy - g.spacing) > 1e-9 * g.spacing)
-    throw InputError(path,
-                     fmt::format("cells are not square (XReal/XRes = {:.17g} mm, YReal/YRes = "
-                                 "{:.17g} mm); a height map needs square cells",
-                                 g.spacing, dy));
+    throw InputError(path, fmt::format("cells are not square (XReal/XRes = {} mm, YReal/YRes = "
+                                       "{} mm); a height map needs square cells",
+                                       g.spacing, dy));
 
   const uint64_t expected = uint64_t(dataStart) + 4ull * uint64_t(g.nx) * uint64_t(g.ny);
   if (bytes.size() != expected)
