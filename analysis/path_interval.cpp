@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -14,7 +15,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double radians(double deg) { return deg * (kPi / 180.0); }
+double radians(double deg) {
+  return deg * (kPi / 180.0);
+}
 
 std::string num(double v) {
   std::ostringstream s;
@@ -23,8 +26,12 @@ std::string num(double v) {
   return s.str();
 }
 
-ProcedureResult ok(double valueMm) { return {true, valueMm, {}}; }
-ProcedureResult notApplicable(std::string reason) { return {false, 0.0, std::move(reason)}; }
+ProcedureResult ok(double valueMm) {
+  return {true, valueMm, {}};
+}
+ProcedureResult notApplicable(std::string reason) {
+  return {false, 0.0, std::move(reason)};
+}
 
 // ---- Domain checks: each returns an empty string when the input is valid ------------
 
@@ -53,14 +60,6 @@ std::string checkLead(double leadDeg) {
   return {};
 }
 
-// Bull tool, lead and one positive length (h or L/2), in this order.
-std::string checkBullInputs(double radius, double cornerRadius, double leadDeg,
-                            const char* lengthName, double length) {
-  if (auto why = checkBull(radius, cornerRadius); !why.empty()) return why;
-  if (auto why = checkLead(leadDeg); !why.empty()) return why;
-  return checkLength(lengthName, length);
-}
-
 // The 2D procedures divide by sin(rho) (Eqs. 5, 9, 11, 13).
 std::string checkSinRho(const char* equation, double leadDeg) {
   if (std::sin(radians(std::fabs(leadDeg))) <= 0)
@@ -81,15 +80,15 @@ std::string checkWithinRadius(double halfInterval, double radius) {
 
 struct V3 {
   double x, y, z;
+  V3 operator+(V3 b) const { return {x + b.x, y + b.y, z + b.z}; }
+  V3 operator-(V3 b) const { return {x - b.x, y - b.y, z - b.z}; }
+  friend V3 operator*(double s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
+  friend double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+  friend V3 cross(V3 a, V3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+  }
+  friend V3 normalize(V3 a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
 };
-V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 operator*(double s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(V3 a, V3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-V3 normalize(V3 a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
 
 // The inclined torus of Fig. 3. Global frame: X = feed, Y = cross-feed, Z = up; the
 // tool centre (centre of the circle of radius Rb) at the origin. The tool axis ZT is
@@ -100,13 +99,19 @@ struct InclinedTorus {
   double rb;   // Rb, mm (0: the sphere of a ball end mill)
   double rcr;  // Rcr, mm
   double sinRho, cosRho;
-  double h;                    // scallop height, mm
-  V3 xt, yt, zt;               // tool axes (line 1)
-  V3 nh{0, 0, 1};              // normal of the h pseudo plane (line 1)
+  double h;        // scallop height, mm
+  V3 xt, yt, zt;   // tool axes (line 1)
+  V3 nh{0, 0, 1};  // normal of the h pseudo plane (line 1)
 
   InclinedTorus(double rb_, double rcr_, double rho, double h_)
-      : rb(rb_), rcr(rcr_), sinRho(std::sin(rho)), cosRho(std::cos(rho)), h(h_),
-        xt{cosRho, 0, -sinRho}, yt{0, 1, 0}, zt{sinRho, 0, cosRho} {}
+      : rb(rb_),
+        rcr(rcr_),
+        sinRho(std::sin(rho)),
+        cosRho(std::cos(rho)),
+        h(h_),
+        xt{cosRho, 0, -sinRho},
+        yt{0, 1, 0},
+        zt{sinRho, 0, cosRho} {}
 
   V3 radial(double g) const { return std::cos(g) * xt + std::sin(g) * yt; }
   V3 centre(double g) const { return rb * radial(g); }                        // P_ap
@@ -183,7 +188,7 @@ bool singleContact(const InclinedTorus& torus, double gammaStart, double eps, do
   double g = (gammaStart > lo && gammaStart < hi) ? gammaStart : 0.5 * (lo + hi);
   for (int iter = 0; iter < 200; ++iter) {  // lines 6-11
     double f = residual(g);
-    if (std::fabs(f) < eps) break;         // line 11
+    if (std::fabs(f) < eps) break;  // line 11
     (f > 0 ? lo : hi) = g;
     double slope = torus.dsDerivative(g);
     double next = slope > 0 ? g + f / slope : lo - 1;  // line 7
@@ -285,8 +290,19 @@ ProcedureResult circularScallopHeight(const char* name, double effectiveRadius,
             std::sqrt(effectiveRadius * effectiveRadius - halfInterval * halfInterval));
 }
 
-ProcedureResult prefixed(const char* name, const std::string& why) {
-  return notApplicable(std::string(name) + ": " + why);
+// The first non-empty reason, prefixed with the procedure's name; empty if none.
+std::string firstReason(const char* name, std::initializer_list<std::string> reasons) {
+  for (const std::string& r : reasons)
+    if (!r.empty()) return std::string(name) + ": " + r;
+  return {};
+}
+
+// Fig. 1 after the input checks; rb = 0 is the ball's sphere.
+ProcedureResult checkedComputational(double rb, double rcr, double leadDeg, double h, double eps) {
+  std::string why =
+      firstReason("computational", {checkLead(leadDeg), checkLength("scallop height h", h),
+                                    checkLength("convergence epsilon", eps)});
+  return why.empty() ? computational(rb, rcr, radians(leadDeg), h, eps) : notApplicable(why);
 }
 
 }  // namespace
@@ -294,32 +310,30 @@ ProcedureResult prefixed(const char* name, const std::string& why) {
 // ---- Radii of the 2D procedures ---------------------------------------------------------
 
 ProcedureResult effectiveRadiusSekine(double radiusMm, double cornerRadiusMm, double leadDeg) {
-  if (auto why = checkBull(radiusMm, cornerRadiusMm); !why.empty()) return prefixed("sekine", why);
-  if (auto why = checkLead(leadDeg); !why.empty()) return prefixed("sekine", why);
-  if (auto why = checkSinRho("Eq. (5)", leadDeg); !why.empty()) return prefixed("sekine", why);
+  std::string why = firstReason("sekine", {checkBull(radiusMm, cornerRadiusMm), checkLead(leadDeg),
+                                           checkSinRho("Eq. (5)", leadDeg)});
+  if (!why.empty()) return notApplicable(why);
   const double rho = radians(leadDeg);
   const double rb = radiusMm - cornerRadiusMm;
   const double rcr = cornerRadiusMm;
-  double zTc = std::fabs(rb * std::sin(rho)) + rcr;                         // Eq. (7)
-  double rShort = zTc - rcr * std::cos(rho);                                // Eq. (6)
-  double rLong = rShort / std::fabs(std::sin(rho));                         // Eq. (5)
-  return ok((rLong * rLong + rShort * rShort) / (2 * rShort));              // Eq. (4)
+  double zTc = std::fabs(rb * std::sin(rho)) + rcr;             // Eq. (7)
+  double rShort = zTc - rcr * std::cos(rho);                    // Eq. (6)
+  double rLong = rShort / std::fabs(std::sin(rho));             // Eq. (5)
+  return ok((rLong * rLong + rShort * rShort) / (2 * rShort));  // Eq. (4)
 }
 
-ProcedureResult effectiveRadiusRedonnet(double radiusMm, double cornerRadiusMm,
-                                        double leadDeg) {
-  if (auto why = checkBull(radiusMm, cornerRadiusMm); !why.empty())
-    return prefixed("redonnet", why);
-  if (auto why = checkLead(leadDeg); !why.empty()) return prefixed("redonnet", why);
-  if (auto why = checkSinRho("Eq. (9)", leadDeg); !why.empty()) return prefixed("redonnet", why);
+ProcedureResult effectiveRadiusRedonnet(double radiusMm, double cornerRadiusMm, double leadDeg) {
+  std::string why = firstReason("redonnet", {checkBull(radiusMm, cornerRadiusMm),
+                                             checkLead(leadDeg), checkSinRho("Eq. (9)", leadDeg)});
+  if (!why.empty()) return notApplicable(why);
   const double rb = radiusMm - cornerRadiusMm;
   // Eq. (9): R_eff = Rb / sin(rho) + Rcr; |sin| because the lead's sign is a mirror.
   return ok(rb / std::fabs(std::sin(radians(leadDeg))) + cornerRadiusMm);
 }
 
 ProcedureResult longRadiusBedi(double radiusMm, double cornerRadiusMm, double leadDeg) {
-  if (auto why = checkBull(radiusMm, cornerRadiusMm); !why.empty()) return prefixed("bedi", why);
-  if (auto why = checkLead(leadDeg); !why.empty()) return prefixed("bedi", why);
+  std::string why = firstReason("bedi", {checkBull(radiusMm, cornerRadiusMm), checkLead(leadDeg)});
+  if (!why.empty()) return notApplicable(why);
   const double rb = radiusMm - cornerRadiusMm;
   // Eq. (10): R_long = Rb + Rcr sin(rho).
   return ok(rb + cornerRadiusMm * std::fabs(std::sin(radians(leadDeg))));
@@ -329,22 +343,18 @@ ProcedureResult longRadiusBedi(double radiusMm, double cornerRadiusMm, double le
 
 ProcedureResult halfIntervalComputational(double radiusMm, double cornerRadiusMm, double leadDeg,
                                           double scallopHeightMm, double epsilonMm) {
-  if (auto why = checkBullInputs(radiusMm, cornerRadiusMm, leadDeg, "scallop height h",
-                                 scallopHeightMm);
-      !why.empty())
-    return prefixed("computational", why);
-  if (auto why = checkLength("convergence epsilon", epsilonMm); !why.empty())
-    return prefixed("computational", why);
-  return computational(radiusMm - cornerRadiusMm, cornerRadiusMm, radians(leadDeg),
-                       scallopHeightMm, epsilonMm);
+  std::string why = firstReason("computational", {checkBull(radiusMm, cornerRadiusMm)});
+  if (!why.empty()) return notApplicable(why);
+  return checkedComputational(radiusMm - cornerRadiusMm, cornerRadiusMm, leadDeg, scallopHeightMm,
+                              epsilonMm);
 }
 
 ProcedureResult halfIntervalSekine(double radiusMm, double cornerRadiusMm, double leadDeg,
                                    double scallopHeightMm) {
   ProcedureResult reff = effectiveRadiusSekine(radiusMm, cornerRadiusMm, leadDeg);
   if (!reff.applicable) return reff;
-  if (auto why = checkLength("scallop height h", scallopHeightMm); !why.empty())
-    return prefixed("sekine", why);
+  std::string why = firstReason("sekine", {checkLength("scallop height h", scallopHeightMm)});
+  if (!why.empty()) return notApplicable(why);
   return circularHalfInterval("sekine", reff.value, scallopHeightMm, radiusMm);  // Eq. (8)
 }
 
@@ -352,8 +362,8 @@ ProcedureResult halfIntervalRedonnet(double radiusMm, double cornerRadiusMm, dou
                                      double scallopHeightMm) {
   ProcedureResult reff = effectiveRadiusRedonnet(radiusMm, cornerRadiusMm, leadDeg);
   if (!reff.applicable) return reff;
-  if (auto why = checkLength("scallop height h", scallopHeightMm); !why.empty())
-    return prefixed("redonnet", why);
+  std::string why = firstReason("redonnet", {checkLength("scallop height h", scallopHeightMm)});
+  if (!why.empty()) return notApplicable(why);
   return circularHalfInterval("redonnet", reff.value, scallopHeightMm, radiusMm);  // Eq. (8)
 }
 
@@ -361,9 +371,9 @@ ProcedureResult halfIntervalBedi(double radiusMm, double cornerRadiusMm, double 
                                  double scallopHeightMm) {
   ProcedureResult rLong = longRadiusBedi(radiusMm, cornerRadiusMm, leadDeg);
   if (!rLong.applicable) return rLong;
-  if (auto why = checkSinRho("Eq. (11)", leadDeg); !why.empty()) return prefixed("bedi", why);
-  if (auto why = checkLength("scallop height h", scallopHeightMm); !why.empty())
-    return prefixed("bedi", why);
+  std::string why = firstReason(
+      "bedi", {checkSinRho("Eq. (11)", leadDeg), checkLength("scallop height h", scallopHeightMm)});
+  if (!why.empty()) return notApplicable(why);
   // Eq. (11): an ellipse of semi-axes R_long (cross-feed) and R_long sin(rho) (depth);
   // past its half depth the formula folds back, so h <= R_long sin(rho).
   const double depth = rLong.value * std::fabs(std::sin(radians(leadDeg)));
@@ -376,9 +386,9 @@ ProcedureResult halfIntervalBedi(double radiusMm, double cornerRadiusMm, double 
 }
 
 ProcedureResult halfIntervalBall(double radiusMm, double scallopHeightMm) {
-  if (auto why = checkLength("tool radius R", radiusMm); !why.empty()) return prefixed("ball", why);
-  if (auto why = checkLength("scallop height h", scallopHeightMm); !why.empty())
-    return prefixed("ball", why);
+  std::string why = firstReason("ball", {checkLength("tool radius R", radiusMm),
+                                         checkLength("scallop height h", scallopHeightMm)});
+  if (!why.empty()) return notApplicable(why);
   const double r = radiusMm, h = scallopHeightMm;
   if (h > r)
     return notApplicable("ball: h = " + num(h) + " mm exceeds the ball radius R = " + num(r) +
@@ -388,31 +398,27 @@ ProcedureResult halfIntervalBall(double radiusMm, double scallopHeightMm) {
 
 // ---- h from L/2 ----------------------------------------------------------------------------
 
-ProcedureResult scallopHeightComputational(double radiusMm, double cornerRadiusMm,
-                                           double leadDeg, double halfIntervalMm,
-                                           double epsilonMm) {
-  if (auto why = checkBullInputs(radiusMm, cornerRadiusMm, leadDeg, "half interval L/2",
-                                 halfIntervalMm);
-      !why.empty())
-    return prefixed("computational", why);
-  if (auto why = checkLength("convergence epsilon", epsilonMm); !why.empty())
-    return prefixed("computational", why);
-  if (auto why = checkWithinRadius(halfIntervalMm, radiusMm); !why.empty())
-    return prefixed("computational", why);
+ProcedureResult scallopHeightComputational(double radiusMm, double cornerRadiusMm, double leadDeg,
+                                           double halfIntervalMm, double epsilonMm) {
+  std::string why =
+      firstReason("computational", {checkBull(radiusMm, cornerRadiusMm), checkLead(leadDeg),
+                                    checkLength("half interval L/2", halfIntervalMm),
+                                    checkLength("convergence epsilon", epsilonMm),
+                                    checkWithinRadius(halfIntervalMm, radiusMm)});
+  if (!why.empty()) return notApplicable(why);
   // L/2 grows with h (sections of a convex cutter below its widest point); bisect on h,
   // treating heights outside the torus model as too high.
-  auto tooLow = [&](double h) {
-    ProcedureResult r = halfIntervalComputational(radiusMm, cornerRadiusMm, leadDeg, h, epsilonMm);
-    return r.applicable && r.value < halfIntervalMm;
+  auto lPerH = [&](double h) {
+    return halfIntervalComputational(radiusMm, cornerRadiusMm, leadDeg, h, epsilonMm);
   };
   double lo = 0, hi = radiusMm + cornerRadiusMm;
-  while (hi - lo > epsilonMm) {
+  for (int iter = 0; iter < 200 && hi - lo > epsilonMm; ++iter) {
     double mid = 0.5 * (lo + hi);
-    (tooLow(mid) ? lo : hi) = mid;
-    if (mid == lo && mid == hi) break;
+    ProcedureResult r = lPerH(mid);
+    (r.applicable && r.value < halfIntervalMm ? lo : hi) = mid;
   }
   double h = 0.5 * (lo + hi);
-  ProcedureResult check = halfIntervalComputational(radiusMm, cornerRadiusMm, leadDeg, h, epsilonMm);
+  ProcedureResult check = lPerH(h);
   if (!check.applicable || std::fabs(check.value - halfIntervalMm) > 1e-6)
     return notApplicable("computational: L/2 = " + num(halfIntervalMm) +
                          " mm is wider than the fillet makes at any h the torus model covers");
@@ -423,10 +429,9 @@ ProcedureResult scallopHeightSekine(double radiusMm, double cornerRadiusMm, doub
                                     double halfIntervalMm) {
   ProcedureResult reff = effectiveRadiusSekine(radiusMm, cornerRadiusMm, leadDeg);
   if (!reff.applicable) return reff;
-  if (auto why = checkLength("half interval L/2", halfIntervalMm); !why.empty())
-    return prefixed("sekine", why);
-  if (auto why = checkWithinRadius(halfIntervalMm, radiusMm); !why.empty())
-    return prefixed("sekine", why);
+  std::string why = firstReason("sekine", {checkLength("half interval L/2", halfIntervalMm),
+                                           checkWithinRadius(halfIntervalMm, radiusMm)});
+  if (!why.empty()) return notApplicable(why);
   return circularScallopHeight("sekine", reff.value, halfIntervalMm);  // Eq. (12)
 }
 
@@ -434,10 +439,9 @@ ProcedureResult scallopHeightRedonnet(double radiusMm, double cornerRadiusMm, do
                                       double halfIntervalMm) {
   ProcedureResult reff = effectiveRadiusRedonnet(radiusMm, cornerRadiusMm, leadDeg);
   if (!reff.applicable) return reff;
-  if (auto why = checkLength("half interval L/2", halfIntervalMm); !why.empty())
-    return prefixed("redonnet", why);
-  if (auto why = checkWithinRadius(halfIntervalMm, radiusMm); !why.empty())
-    return prefixed("redonnet", why);
+  std::string why = firstReason("redonnet", {checkLength("half interval L/2", halfIntervalMm),
+                                             checkWithinRadius(halfIntervalMm, radiusMm)});
+  if (!why.empty()) return notApplicable(why);
   return circularScallopHeight("redonnet", reff.value, halfIntervalMm);  // Eq. (12)
 }
 
@@ -445,12 +449,12 @@ ProcedureResult scallopHeightBedi(double radiusMm, double cornerRadiusMm, double
                                   double halfIntervalMm) {
   ProcedureResult rLong = longRadiusBedi(radiusMm, cornerRadiusMm, leadDeg);
   if (!rLong.applicable) return rLong;
-  if (auto why = checkSinRho("Eq. (13)", leadDeg); !why.empty()) return prefixed("bedi", why);
-  if (auto why = checkLength("half interval L/2", halfIntervalMm); !why.empty())
-    return prefixed("bedi", why);
+  std::string why = firstReason(
+      "bedi", {checkSinRho("Eq. (13)", leadDeg), checkLength("half interval L/2", halfIntervalMm)});
+  if (!why.empty()) return notApplicable(why);
   if (halfIntervalMm > rLong.value)
-    return notApplicable("bedi: L/2 = " + num(halfIntervalMm) + " mm exceeds R_long = " +
-                         num(rLong.value) + " mm (Eq. 13)");
+    return notApplicable("bedi: L/2 = " + num(halfIntervalMm) +
+                         " mm exceeds R_long = " + num(rLong.value) + " mm (Eq. 13)");
   // Eq. (13): h = R_long sin(rho) (1 - sqrt(1 - (L / (2 R_long))^2)).
   double ratio = halfIntervalMm / rLong.value;
   return ok(rLong.value * std::fabs(std::sin(radians(leadDeg))) *
@@ -458,11 +462,10 @@ ProcedureResult scallopHeightBedi(double radiusMm, double cornerRadiusMm, double
 }
 
 ProcedureResult scallopHeightBall(double radiusMm, double halfIntervalMm) {
-  if (auto why = checkLength("tool radius R", radiusMm); !why.empty()) return prefixed("ball", why);
-  if (auto why = checkLength("half interval L/2", halfIntervalMm); !why.empty())
-    return prefixed("ball", why);
-  if (auto why = checkWithinRadius(halfIntervalMm, radiusMm); !why.empty())
-    return prefixed("ball", why);
+  std::string why = firstReason("ball", {checkLength("tool radius R", radiusMm),
+                                         checkLength("half interval L/2", halfIntervalMm),
+                                         checkWithinRadius(halfIntervalMm, radiusMm)});
+  if (!why.empty()) return notApplicable(why);
   // Seed 001 Eq. (1) solved for h on the lower branch (h <= R).
   return ok(radiusMm - std::sqrt(radiusMm * radiusMm - halfIntervalMm * halfIntervalMm));
 }
@@ -477,36 +480,33 @@ const std::vector<std::string>& procedureNames() {
 
 namespace {
 
-const char* kSources[] = {"seed 000 Fig. 1, Eqs. (1)-(3)", "seed 000 Eqs. (4)-(8), (12)",
-                          "seed 000 Eqs. (9), (8), (12)", "seed 000 Eqs. (10), (11), (13)",
-                          "seed 001 Eq. (1)"};
+const char* const kSources[] = {"seed 000 Fig. 1, Eqs. (1)-(3)", "seed 000 Eqs. (4)-(8), (12)",
+                                "seed 000 Eqs. (9), (8), (12)", "seed 000 Eqs. (10), (11), (13)",
+                                "seed 001 Eq. (1)"};
 
-// One of the five procedures; `inverse` selects h from L/2.
+// Procedure `index` of procedureNames(); `inverse` selects h from L/2.
 ProcedureResult runProcedure(int index, const ProcedureTool& tool, double leadDeg, double x,
                              double eps, bool inverse) {
   const double r = tool.radiusMm, rcr = tool.cornerRadiusMm;
   const bool ball = tool.type == ProcedureToolType::Ball;
-  const std::string& name = procedureNames()[index];
   if (ball && index >= 1 && index <= 3)
-    return notApplicable(name + ": a filleted end mill procedure; the tool is a ball end mill");
+    return notApplicable(procedureNames()[index] +
+                         ": a filleted end mill procedure; the tool is a ball end mill");
   if (!ball && index == 4)
     return notApplicable("ball: the ball end mill formula; the tool is a filleted end mill");
   switch (index) {
     case 0:
-      if (ball) {  // Fig. 1 on the degenerate torus Rb = 0, Rcr = R: the ball's sphere
-        if (auto why = checkLength("tool radius R", r); !why.empty()) return prefixed("computational", why);
-        if (auto why = checkLead(leadDeg); !why.empty()) return prefixed("computational", why);
-        if (inverse) return scallopHeightBall(r, x);  // the sphere's section is exact
-        if (auto why = checkLength("scallop height h", x); !why.empty())
-          return prefixed("computational", why);
-        if (auto why = checkLength("convergence epsilon", eps); !why.empty())
-          return prefixed("computational", why);
-        return computational(0.0, r, radians(leadDeg), x, eps);
-      }
-      return inverse ? scallopHeightComputational(r, rcr, leadDeg, x, eps)
-                     : halfIntervalComputational(r, rcr, leadDeg, x, eps);
+      if (!ball)
+        return inverse ? scallopHeightComputational(r, rcr, leadDeg, x, eps)
+                       : halfIntervalComputational(r, rcr, leadDeg, x, eps);
+      if (auto why = firstReason("computational", {checkLength("tool radius R", r)}); !why.empty())
+        return notApplicable(why);
+      // Fig. 1 on the degenerate torus Rb = 0, Rcr = R, the ball's sphere, whose
+      // section is exactly Eq. (1) of seed 001; its inverse is that equation's.
+      return inverse ? scallopHeightBall(r, x) : checkedComputational(0.0, r, leadDeg, x, eps);
     case 1:
-      return inverse ? scallopHeightSekine(r, rcr, leadDeg, x) : halfIntervalSekine(r, rcr, leadDeg, x);
+      return inverse ? scallopHeightSekine(r, rcr, leadDeg, x)
+                     : halfIntervalSekine(r, rcr, leadDeg, x);
     case 2:
       return inverse ? scallopHeightRedonnet(r, rcr, leadDeg, x)
                      : halfIntervalRedonnet(r, rcr, leadDeg, x);
@@ -521,21 +521,20 @@ std::vector<NamedProcedureResult> runAll(const ProcedureTool& tool, double leadD
                                          double eps, bool inverse) {
   std::vector<NamedProcedureResult> out;
   for (int i = 0; i < static_cast<int>(procedureNames().size()); ++i)
-    out.push_back({procedureNames()[i], kSources[i], runProcedure(i, tool, leadDeg, x, eps, inverse)});
+    out.push_back(
+        {procedureNames()[i], kSources[i], runProcedure(i, tool, leadDeg, x, eps, inverse)});
   return out;
 }
 
 }  // namespace
 
-std::vector<NamedProcedureResult> halfIntervalProcedures(const ProcedureTool& tool,
-                                                         double leadDeg, double scallopHeightMm,
-                                                         double epsilonMm) {
+std::vector<NamedProcedureResult> halfIntervalProcedures(const ProcedureTool& tool, double leadDeg,
+                                                         double scallopHeightMm, double epsilonMm) {
   return runAll(tool, leadDeg, scallopHeightMm, epsilonMm, false);
 }
 
-std::vector<NamedProcedureResult> scallopHeightProcedures(const ProcedureTool& tool,
-                                                          double leadDeg, double halfIntervalMm,
-                                                          double epsilonMm) {
+std::vector<NamedProcedureResult> scallopHeightProcedures(const ProcedureTool& tool, double leadDeg,
+                                                          double halfIntervalMm, double epsilonMm) {
   return runAll(tool, leadDeg, halfIntervalMm, epsilonMm, true);
 }
 

@@ -34,8 +34,8 @@ constexpr double kComputationalEpsilonMm = 1e-9;
 
 // Seed 000 Fig. 1, Eqs. (1)-(3): the farthest cross-feed point of the intersection of
 // the inclined torus with the "h pseudo plane", found as in the paper's pseudo-code.
-ProcedureResult halfIntervalComputational(double radiusMm, double cornerRadiusMm,
-                                          double leadDeg, double scallopHeightMm,
+ProcedureResult halfIntervalComputational(double radiusMm, double cornerRadiusMm, double leadDeg,
+                                          double scallopHeightMm,
                                           double epsilonMm = kComputationalEpsilonMm);
 // Seed 000 Eqs. (4)-(8).
 ProcedureResult halfIntervalSekine(double radiusMm, double cornerRadiusMm, double leadDeg,
@@ -52,8 +52,8 @@ ProcedureResult halfIntervalBall(double radiusMm, double scallopHeightMm);
 // ---- h from L/2 -------------------------------------------------------------------
 
 // The inverse of halfIntervalComputational (bisection on h to epsilonMm).
-ProcedureResult scallopHeightComputational(double radiusMm, double cornerRadiusMm,
-                                           double leadDeg, double halfIntervalMm,
+ProcedureResult scallopHeightComputational(double radiusMm, double cornerRadiusMm, double leadDeg,
+                                           double halfIntervalMm,
                                            double epsilonMm = kComputationalEpsilonMm);
 // Seed 000 Eq. (12), true-circular, with R_eff of Eq. (4).
 ProcedureResult scallopHeightSekine(double radiusMm, double cornerRadiusMm, double leadDeg,

@@ -60,7 +60,8 @@ double cuttingSpeed(double radiusOfCutMm, double spindleRpm) {
 
 // Ball end mill at depth d (ap for pass 1, h for later passes).
 ToolConditions ballPass(double radius, double depth, double spindleRpm, const char* depthName) {
-  if (auto why = checkPositive("tool radius R", radius, "mm"); !why.empty()) return notApplicable(why);
+  if (auto why = checkPositive("tool radius R", radius, "mm"); !why.empty())
+    return notApplicable(why);
   if (auto why = checkDepth(depthName, depth, "the ball radius R", radius); !why.empty())
     return notApplicable(why);
   if (auto why = checkPositive("spindle speed S", spindleRpm, "min^-1"); !why.empty())
@@ -68,29 +69,29 @@ ToolConditions ballPass(double radius, double depth, double spindleRpm, const ch
   ToolConditions c;
   c.applicable = true;
   c.alphaTzRad = std::asin((radius - depth) / radius);  // Eq. (2) / (5), asin restored
-  c.rTzMm = radius * std::cos(c.alphaTzRad);             // Eq. (3)
+  c.rTzMm = radius * std::cos(c.alphaTzRad);            // Eq. (3)
   // "In the first tool path, the value of beta_tz is 180 deg"; for later passes "it is
   // reasonable that the result is regarded as 180 deg".
   c.betaTzRad = kPi;
-  c.frictionalDistanceMm = c.rTzMm * c.betaTzRad;                 // Eq. (4)
-  c.cuttingSpeedMPerMin = cuttingSpeed(c.rTzMm, spindleRpm);      // Eq. (6)
+  c.frictionalDistanceMm = c.rTzMm * c.betaTzRad;             // Eq. (4)
+  c.cuttingSpeedMPerMin = cuttingSpeed(c.rTzMm, spindleRpm);  // Eq. (6)
   return c;
 }
 
 // Filleted end mill, Eqs. (7)-(11) at depth d; leaves beta_tz = beta_tz(1) of Eq. (11).
-ToolConditions filletedPass(double radius, double cornerRadius, double inclinationDeg,
-                            double depth, double spindleRpm, const char* depthName) {
-  if (auto why = checkPositive("tool radius R", radius, "mm"); !why.empty()) return notApplicable(why);
+ToolConditions filletedPass(double radius, double cornerRadius, double inclinationDeg, double depth,
+                            double spindleRpm, const char* depthName) {
+  if (auto why = checkPositive("tool radius R", radius, "mm"); !why.empty())
+    return notApplicable(why);
   if (auto why = checkPositive("corner radius Rcr", cornerRadius, "mm"); !why.empty())
     return notApplicable(why);
   if (cornerRadius >= radius)
-    return notApplicable("corner radius Rcr = " + num(cornerRadius) + " mm must be < R = " +
-                         num(radius) + " mm");
+    return notApplicable("corner radius Rcr = " + num(cornerRadius) +
+                         " mm must be < R = " + num(radius) + " mm");
   if (!std::isfinite(inclinationDeg) || std::fabs(inclinationDeg) >= 90)
     return notApplicable("inclination theta = " + num(inclinationDeg) +
                          " deg must be finite with |theta| < 90 deg");
-  if (auto why = checkDepth(depthName, depth, "the corner radius Rcr", cornerRadius);
-      !why.empty())
+  if (auto why = checkDepth(depthName, depth, "the corner radius Rcr", cornerRadius); !why.empty())
     return notApplicable(why);
   if (auto why = checkPositive("spindle speed S", spindleRpm, "min^-1"); !why.empty())
     return notApplicable(why);
@@ -99,14 +100,14 @@ ToolConditions filletedPass(double radius, double cornerRadius, double inclinati
   const double rb = radius - cornerRadius;
   ToolConditions c;
   c.applicable = true;
-  c.laMm = (cornerRadius - depth) * std::cos(theta);        // Eq. (7)
-  c.lbMm = (cornerRadius - depth) * std::sin(theta);        // Eq. (8)
-  c.alphaTzRad = std::asin(c.laMm / cornerRadius);          // Eq. (9)
-  c.rTzMm = cornerRadius * std::cos(c.alphaTzRad);          // Eq. (10)
+  c.laMm = (cornerRadius - depth) * std::cos(theta);  // Eq. (7)
+  c.lbMm = (cornerRadius - depth) * std::sin(theta);  // Eq. (8)
+  c.alphaTzRad = std::asin(c.laMm / cornerRadius);    // Eq. (9)
+  c.rTzMm = cornerRadius * std::cos(c.alphaTzRad);    // Eq. (10)
   // Eq. (11); lb <= R_tz always holds for 0 < depth <= Rcr, so the ratio is <= 1.
   c.betaTzRad = 2 * std::acos((rb + c.lbMm) / (rb + c.rTzMm));
-  c.frictionalDistanceMm = (rb + c.rTzMm) * c.betaTzRad;                 // Eq. (12)
-  c.cuttingSpeedMPerMin = cuttingSpeed(rb + c.rTzMm, spindleRpm);        // Eq. (15)
+  c.frictionalDistanceMm = (rb + c.rTzMm) * c.betaTzRad;           // Eq. (12)
+  c.cuttingSpeedMPerMin = cuttingSpeed(rb + c.rTzMm, spindleRpm);  // Eq. (15)
   return c;
 }
 
@@ -133,9 +134,9 @@ ToolConditions filletedLaterPass(double radiusMm, double cornerRadiusMm, double 
                       "scallop height h");
 }
 
-ToolConditions filletedLaterPassEq13(double radiusMm, double cornerRadiusMm,
-                                     double inclinationDeg, double scallopHeightMm,
-                                     double halfIntervalMm, double spindleRpm) {
+ToolConditions filletedLaterPassEq13(double radiusMm, double cornerRadiusMm, double inclinationDeg,
+                                     double scallopHeightMm, double halfIntervalMm,
+                                     double spindleRpm) {
   ToolConditions c = filletedPass(radiusMm, cornerRadiusMm, inclinationDeg, scallopHeightMm,
                                   spindleRpm, "scallop height h");
   if (!c.applicable) return c;
@@ -145,9 +146,9 @@ ToolConditions filletedLaterPassEq13(double radiusMm, double cornerRadiusMm,
   if (halfIntervalMm > reach)
     return notApplicable("half interval L/2 = " + num(halfIntervalMm) + " mm exceeds Rb + R_tz = " +
                          num(reach) + " mm, the radius of the cutting circle (Eq. 13)");
-  double beta2 = std::asin(halfIntervalMm / reach);   // Eq. (13)
-  c.betaTzRad = 0.5 * c.betaTzRad + beta2;            // beta_tz(1)/2 + beta_tz(2)
-  c.frictionalDistanceMm = reach * c.betaTzRad;       // Eq. (14)
+  double beta2 = std::asin(halfIntervalMm / reach);  // Eq. (13)
+  c.betaTzRad = 0.5 * c.betaTzRad + beta2;           // beta_tz(1)/2 + beta_tz(2)
+  c.frictionalDistanceMm = reach * c.betaTzRad;      // Eq. (14)
   return c;
 }
 

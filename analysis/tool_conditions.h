@@ -43,8 +43,8 @@ ToolConditions filletedLaterPass(double radiusMm, double cornerRadiusMm, double 
                                  double scallopHeightMm, double spindleRpm);
 // The same pass with Eqs. (13)-(14) as printed: beta_tz(2) = asin((L/2) / (Rb + R_tz)).
 // Does not reproduce Table 4 (it gives larger distances); kept for comparison.
-ToolConditions filletedLaterPassEq13(double radiusMm, double cornerRadiusMm,
-                                     double inclinationDeg, double scallopHeightMm,
-                                     double halfIntervalMm, double spindleRpm);
+ToolConditions filletedLaterPassEq13(double radiusMm, double cornerRadiusMm, double inclinationDeg,
+                                     double scallopHeightMm, double halfIntervalMm,
+                                     double spindleRpm);
 
 }  // namespace scallop

@@ -68,9 +68,14 @@ DistanceToCore distanceToCore(const Cutter& c, const Vec3& a, const Vec3& p) {
 
 Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
   const double va = dot(dir, a);
-  const Vec3 perp = dir - a * va;
+  // The radial part of dir, re-orthogonalised: for dir (anti)parallel to a the first
+  // subtraction leaves round-off that may point along a itself. Below 1e-14 |dir| the
+  // direction is treated as axial, whose support set is a whole end face; its centre
+  // is returned.
+  Vec3 perp = dir - a * va;
+  perp -= a * dot(perp, a);
   const double lp = length(perp);
-  const Vec3 e = lp > 0 ? perp / lp : Vec3{};
+  const Vec3 e = lp > 1e-14 * length(dir) ? perp / lp : Vec3{};
   if (va > 0) {
     // Pointing towards the shank: the rim of the flat top at s = L.
     return a * c.fluteLength + e * c.radius;
@@ -88,6 +93,9 @@ LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y
   double z = zMin - 1e-3 * c.radius - 1e-9;
 
   LowestPoint out;
+  // The gradient at the last iterate outside K: a valid outward normal in the limit.
+  // (At the root itself the distance gradient vanishes for a flat cutter, r = 0.)
+  Vec3 outside{0, 0, -1};
   for (int iter = 0; iter < 200; ++iter) {
     const Vec3 p{x, y, z};
     const DistanceToCore d = distanceToCore(c, a, p);
@@ -103,9 +111,10 @@ LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y
     if (phi <= 0) {  // reached the boundary (only ever from below, up to round-off)
       out.hit = true;
       out.z = z;
-      out.normal = length(grad) > 0 ? normalize(grad) : Vec3{0, 0, -1};
+      out.normal = normalize(phi < 0 || length(grad) == 0 ? outside : grad);
       return out;
     }
+    outside = grad;
     // Phi > 0 and not decreasing: l stays outside K above this point.
     if (!(dphi < 0)) return out;
     const double step = -phi / dphi;

@@ -34,6 +34,8 @@ constexpr int64_t kRowsPerChunk = 256;
 
 void checkWritable(const ZMap& map, const std::string& path) {
   if (map.nx() <= 0 || map.ny() <= 0) throw InputError(path, "cannot write an empty height map");
+  if (!(map.grid().spacing > 0) || !std::isfinite(map.grid().spacing))
+    throw InputError(path, fmt::format("grid spacing {} mm is not positive", map.grid().spacing));
   // OpenEXR and GSF store sizes as 32-bit ints.
   if (map.nx() > INT32_MAX || map.ny() > INT32_MAX)
     throw InputError(path, fmt::format("height map of {} x {} cells is too large for an image",

@@ -307,6 +307,8 @@ void writePng(const Canvas& canvas, const std::string& path, const std::string& 
 
 void writePreviewPng(const ZMap& map, const std::string& path, const PreviewOptions& options) {
   if (map.nx() <= 0 || map.ny() <= 0) throw InputError(path, "cannot draw an empty height map");
+  if (!(map.grid().spacing > 0) || !std::isfinite(map.grid().spacing))
+    throw InputError(path, fmt::format("grid spacing {} mm is not positive", map.grid().spacing));
   const int maxPixels = std::max(16, options.maxPixels);
   const int64_t longSide = std::max(map.nx(), map.ny());
   const int64_t k = (longSide + maxPixels - 1) / maxPixels;

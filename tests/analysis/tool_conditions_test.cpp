@@ -94,7 +94,8 @@ TEST(ToolConditionsSeed001, Table4_Filleted_Eqs7to15) {
   for (const Column& c : kTable4) {
     ToolConditions first =
         filletedFirstPass(c.radius, c.cornerRadius, kInclination, kDepthOfCut, c.spindle);
-    ToolConditions later = filletedLaterPass(c.radius, c.cornerRadius, kInclination, c.h, c.spindle);
+    ToolConditions later =
+        filletedLaterPass(c.radius, c.cornerRadius, kInclination, c.h, c.spindle);
     ASSERT_TRUE(first.applicable) << c.name << ": " << first.reason;
     ASSERT_TRUE(later.applicable) << c.name << ": " << later.reason;
     EXPECT_NEAR(first.frictionalDistanceMm, c.sl1, kTwoDecimals) << c.name;
@@ -111,9 +112,10 @@ TEST(ToolConditionsSeed001, Text_FilletedLaterPassRatios) {
   for (int k = 0; k < 4; ++k) {
     const Column& a = kTable4[2 * k];
     const Column& b = kTable4[2 * k + 1];
-    double ratio =
-        filletedLaterPass(b.radius, b.cornerRadius, kInclination, b.h, b.spindle).frictionalDistanceMm /
-        filletedLaterPass(a.radius, a.cornerRadius, kInclination, a.h, a.spindle).frictionalDistanceMm;
+    double ratio = filletedLaterPass(b.radius, b.cornerRadius, kInclination, b.h, b.spindle)
+                       .frictionalDistanceMm /
+                   filletedLaterPass(a.radius, a.cornerRadius, kInclination, a.h, a.spindle)
+                       .frictionalDistanceMm;
     EXPECT_NEAR(ratio, printed[k], 0.0005) << a.name;
   }
 }
@@ -143,7 +145,8 @@ TEST(ToolConditionsSeed001, Table4_Eq13AsPrinted_NotReproduced_Documented) {
   const double eq13[] = {2.622, 3.495, 3.629, 4.897, 3.867, 5.243, 4.022, 5.478};
   for (int i = 0; i < 8; ++i) {
     const Column& c = kTable4[i];
-    ToolConditions table = filletedLaterPass(c.radius, c.cornerRadius, kInclination, c.h, c.spindle);
+    ToolConditions table =
+        filletedLaterPass(c.radius, c.cornerRadius, kInclination, c.h, c.spindle);
     ToolConditions printed = filletedLaterPassEq13(c.radius, c.cornerRadius, kInclination, c.h,
                                                    kTable2HalfInterval[i], c.spindle);
     ASSERT_TRUE(printed.applicable) << c.name << ": " << printed.reason;
