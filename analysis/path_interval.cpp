@@ -98,20 +98,11 @@ struct V3 {
 struct InclinedTorus {
   double rb;   // Rb, mm (0: the sphere of a ball end mill)
   double rcr;  // Rcr, mm
-  double sinRho, cosRho;
-  double h;        // scallop height, mm
-  V3 xt, yt, zt;   // tool axes (line 1)
+  double rho;  // lead, rad, >= 0
+  double h;    // scallop height, mm
+  double sinRho = std::sin(rho), cosRho = std::cos(rho);
+  V3 xt{cosRho, 0, -sinRho}, yt{0, 1, 0}, zt{sinRho, 0, cosRho};  // tool axes (line 1)
   V3 nh{0, 0, 1};  // normal of the h pseudo plane (line 1)
-
-  InclinedTorus(double rb_, double rcr_, double rho, double h_)
-      : rb(rb_),
-        rcr(rcr_),
-        sinRho(std::sin(rho)),
-        cosRho(std::cos(rho)),
-        h(h_),
-        xt{cosRho, 0, -sinRho},
-        yt{0, 1, 0},
-        zt{sinRho, 0, cosRho} {}
 
   V3 radial(double g) const { return std::cos(g) * xt + std::sin(g) * yt; }
   V3 centre(double g) const { return rb * radial(g); }                        // P_ap
@@ -201,7 +192,7 @@ bool singleContact(const InclinedTorus& torus, double gammaStart, double eps, do
 
 // Fig. 1 on a torus with Rb >= 0 (Rb = 0: the sphere of a ball end mill).
 ProcedureResult computational(double rb, double rcr, double rho, double h, double eps) {
-  InclinedTorus torus(rb, rcr, std::fabs(rho), h);
+  InclinedTorus torus{rb, rcr, std::fabs(rho), h};
   const double radius = rb + rcr;
 
   // Line 2, Eq. (1): Rb sin(rho) - Rb cos(gamma) sin(rho) = h/2, the section whose
