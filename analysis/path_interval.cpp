@@ -14,6 +14,7 @@ namespace scallop {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double radians(double deg) {
   return deg * (kPi / 180.0);
@@ -220,65 +221,58 @@ ProcedureResult computational(double rb, double rcr, double rho, double h, doubl
   // Lines 16-25: sample the range at n even steps, keep the neighbours of the sample
   // with the largest Y as the new range, repeat until that sample differs from its
   // neighbours by less than eps in Y.
+  // The range always keeps the best sample, so the last one is the best found.
   constexpr int n = 32;
-  const double kMissed = std::numeric_limits<double>::lowest();
-  double best = kMissed;
-  double bestGamma = 0;
-  V3 bestPoint{0, 0, 0};
-  double y[n];
+  double g[n], y[n];
   V3 p[n];
+  int iMax = 0;
   for (int iter = 0; iter < 200; ++iter) {
     for (int i = 0; i < n; ++i) {  // lines 17-22
-      double g = gLow + (gHigh - gLow) * i / (n - 1);
-      y[i] = torus.farthestOnPlane(g, &p[i]) ? p[i].y : kMissed;
+      g[i] = gLow + (gHigh - gLow) * i / (n - 1);
+      y[i] = torus.farthestOnPlane(g[i], &p[i]) ? p[i].y : -kInf;
     }
-    int iMax = static_cast<int>(std::max_element(y, y + n) - y);  // line 23
-    if (y[iMax] == kMissed) break;
-    double diff = 0;  // line 24
-    if (iMax > 0) diff = std::max(diff, y[iMax] - y[iMax - 1]);
-    if (iMax < n - 1) diff = std::max(diff, y[iMax] - y[iMax + 1]);
-    double step = (gHigh - gLow) / (n - 1);
-    if (y[iMax] >= best) {
-      best = y[iMax];
-      bestGamma = gLow + step * iMax;
-      bestPoint = p[iMax];
-    }
-    double newLow = gLow + step * std::max(0, iMax - 1);  // second line 23
-    double newHigh = gLow + step * std::min(n - 1, iMax + 1);
-    gLow = newLow;
-    gHigh = newHigh;
-    if (diff < eps || gHigh - gLow < 1e-15) break;  // line 25
+    iMax = static_cast<int>(std::max_element(y, y + n) - y);  // line 23
+    double diff = std::max(iMax > 0 ? y[iMax] - y[iMax - 1] : 0.0,
+                           iMax < n - 1 ? y[iMax] - y[iMax + 1] : 0.0);  // line 24
+    gLow = g[std::max(0, iMax - 1)];                                     // second line 23
+    gHigh = g[std::min(n - 1, iMax + 1)];
+    if (!(diff >= eps) || gHigh - gLow < 1e-15) break;  // line 25
   }
-  if (best == kMissed || !std::isfinite(best))
+  if (!std::isfinite(y[iMax]))
     return notApplicable("computational: no section of the torus reaches the h plane");
-  if (!torus.onFilletQuarter(bestGamma, bestPoint))
+  if (!torus.onFilletQuarter(g[iMax], p[iMax]))
     return notApplicable("computational: at h = " + num(h) +
                          " mm the farthest point of the torus lies off the fillet's cutting "
                          "quarter (the flank or the inner half would be cut): h is larger "
                          "than the torus model of Fig. 1 covers");
-  return ok(best);  // line 26
+  return ok(y[iMax]);  // line 26
 }
 
-// Eq. (8): L/2 = sqrt(2 R_eff h - h^2), with the checks shared by sekine and redonnet.
-ProcedureResult circularHalfInterval(const char* name, double effectiveRadius, double h,
+// Eq. (8): L/2 = sqrt(2 R_eff h - h^2), shared by sekine and redonnet.
+ProcedureResult circularHalfInterval(const char* name, const ProcedureResult& reff, double h,
                                      double radius) {
-  if (h > effectiveRadius)
+  if (!reff.applicable) return reff;
+  if (auto why = checkLength("scallop height h", h); !why.empty())
+    return notApplicable(std::string(name) + ": " + why);
+  if (h > reff.value)
     return notApplicable(std::string(name) + ": h = " + num(h) + " mm exceeds R_eff = " +
-                         num(effectiveRadius) + " mm, beyond the circle of Eq. (8)");
-  double halfInterval = std::sqrt(2 * effectiveRadius * h - h * h);
+                         num(reff.value) + " mm, beyond the circle of Eq. (8)");
+  double halfInterval = std::sqrt(2 * reff.value * h - h * h);
   if (auto why = checkWithinRadius(halfInterval, radius); !why.empty())
     return notApplicable(std::string(name) + ": " + why);
   return ok(halfInterval);
 }
 
-// Eq. (12): h = R_eff - sqrt(R_eff^2 - L^2/4).
-ProcedureResult circularScallopHeight(const char* name, double effectiveRadius,
-                                      double halfInterval) {
-  if (halfInterval > effectiveRadius)
-    return notApplicable(std::string(name) + ": L/2 = " + num(halfInterval) +
-                         " mm exceeds R_eff = " + num(effectiveRadius) + " mm (Eq. 12)");
-  return ok(effectiveRadius -
-            std::sqrt(effectiveRadius * effectiveRadius - halfInterval * halfInterval));
+// Eq. (12): h = R_eff - sqrt(R_eff^2 - L^2/4), shared by sekine and redonnet.
+ProcedureResult circularScallopHeight(const char* name, const ProcedureResult& reff,
+                                      double halfInterval, double radius) {
+  if (!reff.applicable) return reff;
+  std::string why = checkLength("half interval L/2", halfInterval);
+  if (why.empty()) why = checkWithinRadius(halfInterval, radius);
+  if (why.empty() && halfInterval > reff.value)
+    why = "L/2 = " + num(halfInterval) + " mm exceeds R_eff = " + num(reff.value) + " mm (Eq. 12)";
+  if (!why.empty()) return notApplicable(std::string(name) + ": " + why);
+  return ok(reff.value - std::sqrt(reff.value * reff.value - halfInterval * halfInterval));
 }
 
 // The first non-empty reason, prefixed with the procedure's name; empty if none.
@@ -342,20 +336,15 @@ ProcedureResult halfIntervalComputational(double radiusMm, double cornerRadiusMm
 
 ProcedureResult halfIntervalSekine(double radiusMm, double cornerRadiusMm, double leadDeg,
                                    double scallopHeightMm) {
-  ProcedureResult reff = effectiveRadiusSekine(radiusMm, cornerRadiusMm, leadDeg);
-  if (!reff.applicable) return reff;
-  std::string why = firstReason("sekine", {checkLength("scallop height h", scallopHeightMm)});
-  if (!why.empty()) return notApplicable(why);
-  return circularHalfInterval("sekine", reff.value, scallopHeightMm, radiusMm);  // Eq. (8)
+  return circularHalfInterval("sekine", effectiveRadiusSekine(radiusMm, cornerRadiusMm, leadDeg),
+                              scallopHeightMm, radiusMm);
 }
 
 ProcedureResult halfIntervalRedonnet(double radiusMm, double cornerRadiusMm, double leadDeg,
                                      double scallopHeightMm) {
-  ProcedureResult reff = effectiveRadiusRedonnet(radiusMm, cornerRadiusMm, leadDeg);
-  if (!reff.applicable) return reff;
-  std::string why = firstReason("redonnet", {checkLength("scallop height h", scallopHeightMm)});
-  if (!why.empty()) return notApplicable(why);
-  return circularHalfInterval("redonnet", reff.value, scallopHeightMm, radiusMm);  // Eq. (8)
+  return circularHalfInterval("redonnet",
+                              effectiveRadiusRedonnet(radiusMm, cornerRadiusMm, leadDeg),
+                              scallopHeightMm, radiusMm);
 }
 
 ProcedureResult halfIntervalBedi(double radiusMm, double cornerRadiusMm, double leadDeg,
@@ -418,22 +407,15 @@ ProcedureResult scallopHeightComputational(double radiusMm, double cornerRadiusM
 
 ProcedureResult scallopHeightSekine(double radiusMm, double cornerRadiusMm, double leadDeg,
                                     double halfIntervalMm) {
-  ProcedureResult reff = effectiveRadiusSekine(radiusMm, cornerRadiusMm, leadDeg);
-  if (!reff.applicable) return reff;
-  std::string why = firstReason("sekine", {checkLength("half interval L/2", halfIntervalMm),
-                                           checkWithinRadius(halfIntervalMm, radiusMm)});
-  if (!why.empty()) return notApplicable(why);
-  return circularScallopHeight("sekine", reff.value, halfIntervalMm);  // Eq. (12)
+  return circularScallopHeight("sekine", effectiveRadiusSekine(radiusMm, cornerRadiusMm, leadDeg),
+                               halfIntervalMm, radiusMm);
 }
 
 ProcedureResult scallopHeightRedonnet(double radiusMm, double cornerRadiusMm, double leadDeg,
                                       double halfIntervalMm) {
-  ProcedureResult reff = effectiveRadiusRedonnet(radiusMm, cornerRadiusMm, leadDeg);
-  if (!reff.applicable) return reff;
-  std::string why = firstReason("redonnet", {checkLength("half interval L/2", halfIntervalMm),
-                                             checkWithinRadius(halfIntervalMm, radiusMm)});
-  if (!why.empty()) return notApplicable(why);
-  return circularScallopHeight("redonnet", reff.value, halfIntervalMm);  // Eq. (12)
+  return circularScallopHeight("redonnet",
+                               effectiveRadiusRedonnet(radiusMm, cornerRadiusMm, leadDeg),
+                               halfIntervalMm, radiusMm);
 }
 
 ProcedureResult scallopHeightBedi(double radiusMm, double cornerRadiusMm, double leadDeg,

@@ -17,11 +17,21 @@ namespace scallop {
 
 namespace {
 
-// A tile primitive: its Embree box (world coordinates, float) and its segment.
+// A tile primitive: its Embree box (world coordinates, float), its segment, and the
+// supporting planes found while bounding it. Each plane z = a + b x + c y lies below
+// the whole swept solid, so max over planes at the exact cell centre is a lower bound
+// that is much tighter than the box's (which holds for the whole tile): a candidate
+// whose bound is not below the best height so far needs no exact evaluation.
+struct TilePlane {
+  double a, b, c;
+};
+constexpr int kPlanesPerTile = 5;
 struct TileBox {
   float lower[3];
   float upper[3];
   uint32_t segment;
+  uint32_t planes;
+  TilePlane plane[kPlanesPerTile];
 };
 
 // Slack that absorbs float rounding of a coordinate of magnitude |v| (mm): a few float
@@ -70,7 +80,15 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const auto* impl = static_cast<const SweptScene::Impl*>(args->geometryUserPtr);
   auto* cell = reinterpret_cast<CellContext*>(args->context);
-  const SweptSegment& seg = impl->segments[impl->tiles[args->primID].segment];
+  const TileBox& tile = impl->tiles[args->primID];
+  double bound = -HUGE_VAL;
+  for (uint32_t k = 0; k < tile.planes; ++k) {
+    const TilePlane& p = tile.plane[k];
+    bound = std::max(bound, p.a + p.b * cell->x + p.c * cell->y);
+  }
+  // The planes are exact supporting planes up to double round-off; 1e-9 mm covers it.
+  if (bound - 1e-9 * (1 + std::fabs(bound)) >= cell->best) return;
+  const SweptSegment& seg = impl->segments[tile.segment];
   ++cell->evaluations;
   const LowestPoint lp = seg.lowestPoint(cell->x, cell->y);
   if (!lp.hit || !(lp.z < cell->best)) return;
@@ -135,6 +153,8 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
         if (disjoint) continue;
 
         double lower = box.min.z;
+        TileBox t;
+        t.planes = 0;
         const double sx[5] = {0.5 * (x0 + x1), x0, x1, x0, x1};
         const double sy[5] = {0.5 * (y0 + y1), y0, y0, y1, y1};
         for (int s = 0; s < 5; ++s) {
@@ -143,13 +163,14 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
           if (!lp.hit || lp.normal.z > -1e-3) continue;
           const Vec3& N = lp.normal;
           const double h = seg.support(N);
+          // N . p <= h on the solid, N.z < 0:  z >= (h - N.x x - N.y y) / N.z.
+          const TilePlane plane{h / N.z, -N.x / N.z, -N.y / N.z};
+          t.plane[t.planes++] = plane;
           double planeMin = HUGE_VAL;
-          for (int c = 0; c < 4; ++c)
-            planeMin = std::min(planeMin, (h - N.x * cx[c] - N.y * cy[c]) / N.z);
+          for (int c = 0; c < 4; ++c) planeMin = std::min(planeMin, plane.a + plane.b * cx[c] + plane.c * cy[c]);
           lower = std::max(lower, planeMin);
         }
         if (lower >= stockTop) continue;  // the whole tile stays above the stock
-        TileBox t;
         t.lower[0] = roundDown(x0), t.lower[1] = roundDown(y0), t.lower[2] = roundDown(lower);
         t.upper[0] = roundUp(x1), t.upper[1] = roundUp(y1);
         t.upper[2] = std::max(t.lower[2], roundUp(std::min(box.max.z, stockTop)));
