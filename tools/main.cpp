@@ -8,10 +8,10 @@
 #include <exception>
 #include <memory>
 #include <new>
+#include <vector>
 
 #include "sweep/input_error.h"
-#include "tools/job.h"
-#include "tools/simulate_command.h"
+#include "tools/command.h"
 
 namespace {
 
@@ -19,37 +19,19 @@ constexpr const char* kDescription =
     "scallop: exact machined-surface topography of milling tool paths.\n"
     "Sweeps ball, flat and bull (torus) cutters along linear moves, with any tool axis,\n"
     "and computes on a z-map grid the exact lowest point of the swept solids (double\n"
-    "precision, 1e-6 mm). Lengths in mm, angles in degrees.";
-
-constexpr const char* kSimulateHelp =
-    "Simulate a job file and write DIR/heights.exr (float32 channel Z, mm), DIR/heights.gsf\n"
-    "(Gwyddion, metres), DIR/preview.png (shaded colour map with scale) and\n"
-    "DIR/report.json (inputs, grid, timings, measurements).\n"
-    "Without JOB, runs the built-in default job (see --print-default-job):\n"
-    "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
-    "Job file keys: tool{type,radius,corner_radius,flute_length}, stock{min,max},\n"
-    "grid{spacing}, path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,\n"
-    "segment_length} | file}, sweep{axis_tolerance}.";
+    "precision, 1e-6 mm). Lengths in mm, angles in degrees. Exit status: 0 success,\n"
+    "1 bad input, 2 usage error, 3 internal error. `scallop COMMAND --help` for more.";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{kDescription, "scallop"};
   app.require_subcommand(1);
-  int threads = 0;
+  scallop::CommonOptions common;
 
-  scallop::SimulateArgs sim;
-  bool printDefault = false;
-  CLI::App* simulate = app.add_subcommand("simulate", kSimulateHelp);
-  simulate->add_option("JOB", sim.jobFile, "Job file (JSON); omit for the built-in default job");
-  simulate->add_option("-o,--output", sim.outDir,
-                       "Output folder, created if missing; other files in it are left alone")
-      ->capture_default_str();
-  simulate->add_option("--threads", threads, "Worker threads (default: all cores); results do not depend on it")
-      ->check(CLI::NonNegativeNumber);
-  simulate->add_flag("--json", sim.json, "Print report.json on stdout (and nothing else there)");
-  simulate->add_flag("--print-default-job", printDefault,
-                     "Print the built-in default job file and exit");
+  // Every subcommand, in the order --help lists them.
+  std::vector<scallop::Command> commands;
+  commands.push_back(scallop::addSimulateCommand(app, common));
 
   try {
     app.parse(argc, argv);
@@ -59,19 +41,13 @@ int main(int argc, char** argv) {
   }
 
   std::unique_ptr<tbb::global_control> threadLimit;
-  if (threads > 0)
+  if (common.threads > 0)
     threadLimit = std::make_unique<tbb::global_control>(
-        tbb::global_control::max_allowed_parallelism, size_t(threads));
-  sim.threads = threads;
+        tbb::global_control::max_allowed_parallelism, size_t(common.threads));
 
   try {
-    if (simulate->parsed()) {
-      if (printDefault) {
-        std::puts(scallop::defaultJobJson());
-        return 0;
-      }
-      return scallop::runSimulate(sim);
-    }
+    for (const scallop::Command& command : commands)
+      if (command.app->parsed()) return command.run();
   } catch (const scallop::InputError& e) {
     std::fprintf(stderr, "scallop: error: %s\n", e.what());
     return 1;

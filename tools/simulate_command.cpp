@@ -2,6 +2,8 @@
 
 #include <tbb/info.h>
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,6 +17,7 @@
 #include "raycast/simulation.h"
 #include "sweep/input_error.h"
 #include "tools/atomic_file.h"
+#include "tools/command.h"
 #include "tools/height_images.h"
 #include "tools/job.h"
 #include "tools/progress.h"
@@ -136,6 +139,48 @@ int runSimulate(const SimulateArgs& args) {
                 report.c_str());
   }
   return 0;
+}
+
+namespace {
+
+constexpr const char* kSimulateHelp =
+    "Simulate a job file and write DIR/heights.exr (float32 channel Z, mm), DIR/heights.gsf\n"
+    "(Gwyddion, metres), DIR/preview.png (shaded colour map with scale) and\n"
+    "DIR/report.json (inputs, grid, timings, measurements).\n"
+    "Without JOB, runs the built-in default job (see --print-default-job):\n"
+    "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
+    "Job file keys: tool{type,radius,corner_radius,flute_length}, stock{min,max},\n"
+    "grid{spacing}, path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,\n"
+    "segment_length} | file}, sweep{axis_tolerance}.";
+
+}  // namespace
+
+void addThreadsOption(CLI::App& command, CommonOptions& common) {
+  command.add_option("--threads", common.threads,
+                     "Worker threads (default: all cores); results do not depend on it")
+      ->check(CLI::NonNegativeNumber);
+}
+
+Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
+  auto args = std::make_shared<SimulateArgs>();
+  auto printDefault = std::make_shared<bool>(false);
+  CLI::App* app = parent.add_subcommand("simulate", kSimulateHelp);
+  app->add_option("JOB", args->jobFile, "Job file (JSON); omit for the built-in default job");
+  app->add_option("-o,--output", args->outDir,
+                  "Output folder, created if missing; other files in it are left alone")
+      ->capture_default_str();
+  addThreadsOption(*app, common);
+  app->add_flag("--json", args->json, "Print report.json on stdout (and nothing else there)");
+  app->add_flag("--print-default-job", *printDefault,
+                "Print the built-in default job file and exit");
+  return {app, [args, printDefault, &common]() {
+            if (*printDefault) {
+              std::puts(defaultJobJson());
+              return 0;
+            }
+            args->threads = common.threads;
+            return runSimulate(*args);
+          }};
 }
 
 }  // namespace scallop

@@ -1,0 +1,29 @@
+// Command: how a `scallop` subcommand plugs into main.cpp. Each command file defines
+// one `Command addXxxCommand(CLI::App& parent, CommonOptions& common)` that declares
+// its options (binding them to its own state) and returns the function that runs it.
+#pragma once
+
+#include <functional>
+
+namespace CLI {
+class App;
+}
+
+namespace scallop {
+
+struct CommonOptions {
+  int threads = 0;  // --threads N (0: all cores); main.cpp applies it before run()
+};
+
+struct Command {
+  CLI::App* app = nullptr;
+  // Returns the exit status; throws InputError for bad input (exit 1).
+  std::function<int()> run;
+};
+
+// Adds `--threads` with the standard wording to a computing command.
+void addThreadsOption(CLI::App& command, CommonOptions& common);
+
+Command addSimulateCommand(CLI::App& parent, CommonOptions& common);
+
+}  // namespace scallop
