@@ -23,8 +23,9 @@
 //   3. The support point of the section S in direction n is the support point of K in
 //      a direction n cos(theta) + m sin(theta) (m: normal of P) for the theta at which
 //      it lies on P (Lagrange). Its offset from P is monotone in theta, so it is found
-//      by bisection on closed-form support points of K; the final point interpolates
-//      the two bracketing support points, which lies in K and exactly on P.
+//      by a bracketing root finder on closed-form support points of K. Where the
+//      support point jumps (a flat face), the chord between the bracketing points lies
+//      on the face and crosses P: that is the section's support point.
 //
 // The stationary cutter's lowest point on a vertical line (the t = 0 / t = 1 cases)
 // is the lowest root of the convex function Phi(z) = max(dist(p, K0) - r, s - L)
@@ -182,22 +183,48 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
   Vec3 x2 = cutterSupport(cutter_, axis_, m);
   double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
   if (f1 > 0 || f2 < 0) return {};  // P misses K, so l misses C
-  for (int iter = 0; iter < 80 && th2 - th1 > 1e-15; ++iter) {
-    const double th = 0.5 * (th1 + th2);
+
+  // Root of the monotone f(theta) = x_K(theta) . m - c by the Illinois variant of
+  // regula falsi (superlinear on the smooth torus and cylinder), with a bisection step
+  // every fourth iteration so that jumps (flat faces) still shrink the bracket.
+  const double tol = 1e-14 * (cutter_.radius + cutter_.fluteLength);
+  double g1 = f1, g2 = f2;  // regula-falsi weights (Illinois halves the stale end's)
+  int kept = 0;             // which end was replaced last: -1 low, +1 high
+  bool onPlane = false;
+  Vec3 ps;
+  double thRoot = 0;
+  for (int iter = 0; iter < 200 && th2 - th1 > 1e-15; ++iter) {
+    double th = 0.5 * (th1 + th2);
+    if (iter % 4 != 3) {
+      const double rf = th1 - g1 * (th2 - th1) / (g2 - g1);
+      if (rf > th1 && rf < th2) th = rf;
+    }
     const Vec3 xm = cutterSupport(cutter_, axis_, direction(th));
     const double fm = dot(xm, m) - c;
-    if (fm < 0) {
-      th1 = th, x1 = xm, f1 = fm;
-    } else {
-      th2 = th, x2 = xm, f2 = fm;
+    if (std::fabs(fm) <= tol) {  // on P to round-off: move it onto P exactly
+      ps = xm - m * fm;
+      thRoot = th;
+      onPlane = true;
+      break;
     }
-    if (f2 - f1 <= 1e-15) break;
+    if (fm < 0) {
+      th1 = th, x1 = xm, f1 = fm, g1 = fm;
+      if (kept == -1) g2 *= 0.5;
+      kept = -1;
+    } else {
+      th2 = th, x2 = xm, f2 = fm, g2 = fm;
+      if (kept == +1) g1 *= 0.5;
+      kept = +1;
+    }
   }
-  // The chord between the bracketing support points crosses P inside K. On a curved
-  // patch the chord is O(|x2 - x1|^2) inside the surface; across a flat face (where
-  // the support point jumps) it lies on the face, which is exactly the support set.
-  const double lam = f2 > f1 ? -f1 / (f2 - f1) : 0.0;
-  const Vec3 ps = x1 + (x2 - x1) * lam;
+  if (!onPlane) {
+    // The bracket closed on a jump of the support point: a flat face (the bottom disk,
+    // the top disk or a side line). The chord between the two bracketing support
+    // points lies on that face, which is the support set, and crosses P.
+    const double lam = f2 > f1 ? -f1 / (f2 - f1) : 0.0;
+    ps = x1 + (x2 - x1) * lam;
+    thRoot = 0.5 * (th1 + th2);
+  }
   const double vs = dot(ps, uHat);
 
   // Step 2: clamp the envelope point to the move.
@@ -214,7 +241,7 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
   LowestPoint out;
   out.hit = true;
   out.z = start_.z + ps.z + (u0 - vs) * sigma;
-  out.normal = normalize(direction(0.5 * (th1 + th2)));
+  out.normal = normalize(direction(thRoot));
   return out;
 }
 
