@@ -40,8 +40,6 @@ namespace scallop {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Distance from p (tool frame) to K0 and its gradient, for the Newton iteration.
 struct DistanceToCore {
   double value;
@@ -177,14 +175,17 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
 
   // Step 3: the support point of S = K n P in direction n = sigma u_hat - z_hat.
   const Vec3 n = normalize(Vec3{sigma * uHat.x, sigma * uHat.y, -1});
-  auto direction = [&](double theta) { return n * std::cos(theta) + m * std::sin(theta); };
-  double th1 = -kPi / 2, th2 = kPi / 2;
+  // Directions n cos(theta) + m sin(theta), theta in [-pi/2, pi/2], parametrised
+  // without trigonometry by t = tan(theta / 2) in [-1, 1]: (1 - t^2) n + 2 t m points
+  // the same way, and support points do not depend on a direction's length.
+  auto direction = [&](double t) { return n * (1 - t * t) + m * (2 * t); };
+  double th1 = -1, th2 = 1;
   Vec3 x1 = cutterSupport(cutter_, axis_, -m);
   Vec3 x2 = cutterSupport(cutter_, axis_, m);
   double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
   if (f1 > 0 || f2 < 0) return {};  // P misses K, so l misses C
 
-  // Root of the monotone f(theta) = x_K(theta) . m - c by the Illinois variant of
+  // Root of the monotone f(t) = x_K(theta) . m - c by the Illinois variant of
   // regula falsi (superlinear on the smooth torus and cylinder), with a bisection step
   // every fourth iteration so that jumps (flat faces) still shrink the bracket.
   const double tol = 1e-14 * (cutter_.radius + cutter_.fluteLength);
@@ -193,7 +194,7 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
   bool onPlane = false;
   Vec3 ps;
   double thRoot = 0;
-  for (int iter = 0; iter < 200 && th2 - th1 > 1e-15; ++iter) {
+  for (int iter = 0; iter < 200 && th2 - th1 > 1e-16; ++iter) {
     double th = 0.5 * (th1 + th2);
     if (iter % 4 != 3) {
       const double rf = th1 - g1 * (th2 - th1) / (g2 - g1);
