@@ -123,7 +123,14 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
     const SweptSegment& seg = segments[k];
     const Box3 box = seg.bounds();
     if (box.min.z >= stockTop) return;  // never below the stock top: cannot cut
-    const double T = options.tileSize > 0 ? options.tileSize : seg.cutter().radius / 8;
+    // Tiles of R/8 keep the box bounds tight on long moves; a short move gets at most
+    // ~kMaxTiles tiles, since bounding costs 5 exact evaluations a tile and the
+    // per-cell plane test keeps the culling sharp anyway.
+    constexpr double kMaxTiles = 64;
+    const double area = (box.max.x - box.min.x) * (box.max.y - box.min.y);
+    const double T = options.tileSize > 0
+                         ? options.tileSize
+                         : std::max(seg.cutter().radius / 8, std::sqrt(area / kMaxTiles));
     const int nx = std::max(1, int(std::ceil((box.max.x - box.min.x) / T)));
     const int ny = std::max(1, int(std::ceil((box.max.y - box.min.y) / T)));
     const double tx = (box.max.x - box.min.x) / nx, ty = (box.max.y - box.min.y) / ny;
