@@ -7,6 +7,8 @@ SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3
   SceneOptions sceneOptions;
   sceneOptions.tileSize = options.tileSize;
   sceneOptions.stockTop = stock.max.z;
+  // Candidate regions of options.cast.regionCells cells a side (zmap_caster.cpp).
+  sceneOptions.regionHalfSize = 0.5 * double(options.cast.regionCells - 1) * grid.spacing;
   const SweptScene scene(sweepToolPath(cutter, path, options.sweep), sceneOptions);
 
   SimulationResult result;

@@ -48,7 +48,33 @@ struct CellContext {
   double originZ;    // the ray starts here, below every box
   double best;       // lowest exact height found so far, mm
   uint64_t evaluations;
+  SweptScene::QueryCache* cache;  // may be null
+  uint32_t winner;                // segment of `best`, or UINT32_MAX
+  // Gathering mode (gatherCandidates): collect tiles that may be lowest somewhere in
+  // the region [x0, x1] x [y0, y1] below `best`, without shortening the ray.
+  bool gathering;
+  double x0, y0, x1, y1;
+  std::vector<uint32_t>* gathered;
 };
+
+// The lower bound of a tile's planes at one point, or over a rectangle (each plane's
+// minimum over a rectangle is at a corner).
+double planeBoundAt(const TileBox& t, double x, double y) {
+  double bound = -HUGE_VAL;
+  for (uint32_t k = 0; k < t.planes; ++k)
+    bound = std::max(bound, t.plane[k].a + t.plane[k].b * x + t.plane[k].c * y);
+  return bound;
+}
+double planeBoundOver(const TileBox& t, double x0, double y0, double x1, double y1) {
+  double bound = -HUGE_VAL;
+  for (uint32_t k = 0; k < t.planes; ++k) {
+    const TilePlane& p = t.plane[k];
+    bound = std::max(bound, p.a + std::min(p.b * x0, p.b * x1) + std::min(p.c * y0, p.c * y1));
+  }
+  return bound;
+}
+// Plane values are exact up to double round-off; this margin (mm) absorbs it.
+double planeSlack(double v) { return 1e-9 * (1 + std::fabs(v)); }
 
 }  // namespace
 
@@ -81,18 +107,21 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   const auto* impl = static_cast<const SweptScene::Impl*>(args->geometryUserPtr);
   auto* cell = reinterpret_cast<CellContext*>(args->context);
   const TileBox& tile = impl->tiles[args->primID];
-  double bound = -HUGE_VAL;
-  for (uint32_t k = 0; k < tile.planes; ++k) {
-    const TilePlane& p = tile.plane[k];
-    bound = std::max(bound, p.a + p.b * cell->x + p.c * cell->y);
+  if (cell->gathering) {
+    const double bound = planeBoundOver(tile, cell->x0, cell->y0, cell->x1, cell->y1);
+    if (bound - planeSlack(bound) < cell->best) cell->gathered->push_back(args->primID);
+    return;
   }
-  // The planes are exact supporting planes up to double round-off; 1e-9 mm covers it.
-  if (bound - 1e-9 * (1 + std::fabs(bound)) >= cell->best) return;
+  const double bound = planeBoundAt(tile, cell->x, cell->y);
+  if (bound - planeSlack(bound) >= cell->best) return;
   const SweptSegment& seg = impl->segments[tile.segment];
   ++cell->evaluations;
-  const LowestPoint lp = seg.lowestPoint(cell->x, cell->y);
+  SectionMemo* memo =
+      cell->cache ? &cell->cache->memo[tile.segment % SweptScene::QueryCache::kSlots] : nullptr;
+  const LowestPoint lp = seg.lowestPoint(cell->x, cell->y, memo);
   if (!lp.hit || !(lp.z < cell->best)) return;
   cell->best = lp.z;
+  cell->winner = tile.segment;
   // Shorten the ray to (just above) the new best: boxes that start higher are culled,
   // while any segment that could still be lower has a box starting below it.
   auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
@@ -178,8 +207,11 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
           lower = std::max(lower, planeMin);
         }
         if (lower >= stockTop) continue;  // the whole tile stays above the stock
-        t.lower[0] = roundDown(x0), t.lower[1] = roundDown(y0), t.lower[2] = roundDown(lower);
-        t.upper[0] = roundUp(x1), t.upper[1] = roundUp(y1);
+        // Grown by the query region's half size, so that one ray at a region's centre
+        // meets every tile that overlaps the region (gatherCandidates).
+        const double g = options.regionHalfSize;
+        t.lower[0] = roundDown(x0 - g), t.lower[1] = roundDown(y0 - g), t.lower[2] = roundDown(lower);
+        t.upper[0] = roundUp(x1 + g), t.upper[1] = roundUp(y1 + g);
         t.upper[2] = std::max(t.lower[2], roundUp(std::min(box.max.z, stockTop)));
         t.segment = uint32_t(k);
         out.push_back(t);
@@ -217,7 +249,7 @@ void SweptScene::Impl::buildEmbree() {
 }
 
 SweptScene::SweptScene(std::vector<SweptSegment> segments, const SceneOptions& options)
-    : impl_(std::make_unique<Impl>()) {
+    : impl_(std::make_unique<Impl>()), regionHalfSize_(options.regionHalfSize) {
   const auto t0 = std::chrono::steady_clock::now();
   impl_->segments = std::move(segments);
   if (impl_->segments.size() > UINT32_MAX) throw std::runtime_error("too many segments");
@@ -239,29 +271,98 @@ SweptScene::~SweptScene() {
 const std::vector<SweptSegment>& SweptScene::segments() const { return impl_->segments; }
 const SceneStats& SweptScene::stats() const { return impl_->stats; }
 
-double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& evaluations) const {
-  if (impl_->tiles.empty()) return ceiling;
-  CellContext cell;
-  rtcInitIntersectContext(&cell.embree);
-  cell.x = x, cell.y = y;
-  cell.originZ = impl_->originZ;
-  cell.best = ceiling;
-  cell.evaluations = 0;
+namespace {
 
+// One upward ray from below every box at (x, y), ending at `ceiling`.
+RTCRayHit upwardRay(double x, double y, double originZ, double ceiling) {
   RTCRayHit rh;
-  rh.ray.org_x = float(x), rh.ray.org_y = float(y), rh.ray.org_z = float(impl_->originZ);
+  rh.ray.org_x = float(x), rh.ray.org_y = float(y), rh.ray.org_z = float(originZ);
   rh.ray.dir_x = 0, rh.ray.dir_y = 0, rh.ray.dir_z = 1;
   rh.ray.tnear = 0;
-  rh.ray.tfar = roundUp(ceiling - impl_->originZ);
+  rh.ray.tfar = roundUp(ceiling - originZ);
   rh.ray.time = 0;
   rh.ray.mask = ~0u;
   rh.ray.id = 0;
   rh.ray.flags = 0;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
+CellContext makeContext(double x, double y, double originZ, double ceiling,
+                        SweptScene::QueryCache* cache) {
+  CellContext cell;
+  rtcInitIntersectContext(&cell.embree);
+  cell.x = x, cell.y = y;
+  cell.originZ = originZ;
+  cell.best = ceiling;
+  cell.evaluations = 0;
+  cell.cache = cache;
+  cell.winner = UINT32_MAX;
+  cell.gathering = false;
+  cell.x0 = cell.y0 = cell.x1 = cell.y1 = 0;
+  cell.gathered = nullptr;
+  return cell;
+}
+
+}  // namespace
+
+double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& evaluations,
+                                QueryCache* cache, uint32_t* winner) const {
+  if (winner) *winner = UINT32_MAX;
+  if (impl_->tiles.empty()) return ceiling;
+  CellContext cell = makeContext(x, y, impl_->originZ, ceiling, cache);
+  RTCRayHit rh = upwardRay(x, y, impl_->originZ, ceiling);
   rtcIntersect1(impl_->scene, &cell.embree, &rh);
   evaluations += cell.evaluations;
+  if (winner) *winner = cell.winner;
   return std::min(cell.best, ceiling);
+}
+
+void SweptScene::gatherCandidates(double x0, double y0, double x1, double y1, double ceiling,
+                                  std::vector<uint32_t>& candidates) const {
+  candidates.clear();
+  if (impl_->tiles.empty()) return;
+  if (std::max(x1 - x0, y1 - y0) > 2 * regionHalfSize_ * (1 + 1e-12))
+    throw std::logic_error("gatherCandidates: region larger than the scene was built for");
+  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  CellContext cell = makeContext(cx, cy, impl_->originZ, ceiling, nullptr);
+  cell.gathering = true;
+  cell.x0 = x0, cell.y0 = y0, cell.x1 = x1, cell.y1 = y1;
+  cell.gathered = &candidates;
+  RTCRayHit rh = upwardRay(cx, cy, impl_->originZ, ceiling);
+  rtcIntersect1(impl_->scene, &cell.embree, &rh);
+  // One tile per segment is enough: every tile's planes bound its whole segment. Kept in
+  // a canonical order, so the work done does not depend on Embree's traversal order.
+  std::sort(candidates.begin(), candidates.end(), [&](uint32_t a, uint32_t b) {
+    const uint32_t sa = impl_->tiles[a].segment, sb = impl_->tiles[b].segment;
+    return sa != sb ? sa < sb : a < b;
+  });
+  candidates.erase(std::unique(candidates.begin(), candidates.end(),
+                               [&](uint32_t a, uint32_t b) {
+                                 return impl_->tiles[a].segment == impl_->tiles[b].segment;
+                               }),
+                   candidates.end());
+}
+
+uint32_t SweptScene::segmentOfCandidate(uint32_t candidate) const {
+  return impl_->tiles[candidate].segment;
+}
+
+double SweptScene::lowestHeightAmong(const std::vector<uint32_t>& candidates, double x, double y,
+                                     double ceiling, uint64_t& evaluations,
+                                     QueryCache* cache) const {
+  double best = ceiling;
+  for (uint32_t id : candidates) {
+    const TileBox& tile = impl_->tiles[id];
+    const double bound = planeBoundAt(tile, x, y);
+    if (bound - planeSlack(bound) >= best) continue;
+    ++evaluations;
+    SectionMemo* memo = cache ? &cache->memo[tile.segment % QueryCache::kSlots] : nullptr;
+    const LowestPoint lp = impl_->segments[tile.segment].lowestPoint(x, y, memo);
+    if (lp.hit && lp.z < best) best = lp.z;
+  }
+  return best;
 }
 
 }  // namespace scallop

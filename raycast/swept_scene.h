@@ -21,6 +21,9 @@ namespace scallop {
 struct SceneOptions {
   double tileSize = 0;   // xy tile side, mm; <= 0 picks cutter radius / 8
   double stockTop = 0;   // heights above this never matter (the ray stops there), mm
+  // Largest half side of a square region that gatherCandidates() will be asked about,
+  // mm. Tile boxes grow by this much in x and y.
+  double regionHalfSize = 0;
 };
 
 struct SceneStats {
@@ -37,9 +40,33 @@ class SweptScene {
   SweptScene(const SweptScene&) = delete;
   SweptScene& operator=(const SweptScene&) = delete;
 
+  // Scratch for one thread's consecutive queries: a memo of each segment's last plane
+  // section (direct-mapped by segment). Results do not depend on it, only speed does.
+  struct QueryCache {
+    static constexpr size_t kSlots = 32;
+    SectionMemo memo[kSlots];
+  };
+
   // The lowest height at (x, y) over all segments, or `ceiling` if none is lower.
   // `evaluations` is incremented by the number of exact evaluations made.
-  double lowestHeight(double x, double y, double ceiling, uint64_t& evaluations) const;
+  // `winner`, if given, receives the segment of the returned height (UINT32_MAX if
+  // the ceiling was not beaten).
+  double lowestHeight(double x, double y, double ceiling, uint64_t& evaluations,
+                      QueryCache* cache = nullptr, uint32_t* winner = nullptr) const;
+
+  // --- Region queries: one Embree ray for a whole square of cells ---------------------
+  // Every segment that can be lower than `ceiling` somewhere in [x0, x1] x [y0, y1]
+  // (one candidate per segment). The region's half side must not exceed
+  // SceneOptions::regionHalfSize.
+  void gatherCandidates(double x0, double y0, double x1, double y1, double ceiling,
+                        std::vector<uint32_t>& candidates) const;
+  uint32_t segmentOfCandidate(uint32_t candidate) const;
+  double regionHalfSize() const { return regionHalfSize_; }
+  // The lowest height at (x, y) among the candidates, or `ceiling`: the same value
+  // lowestHeight() returns for any (x, y) inside the gathered region.
+  double lowestHeightAmong(const std::vector<uint32_t>& candidates, double x, double y,
+                           double ceiling, uint64_t& evaluations,
+                           QueryCache* cache = nullptr) const;
 
   const std::vector<SweptSegment>& segments() const;
   const SceneStats& stats() const;
@@ -48,6 +75,7 @@ class SweptScene {
 
  private:
   std::unique_ptr<Impl> impl_;
+  double regionHalfSize_ = 0;
 };
 
 }  // namespace scallop

@@ -5,17 +5,66 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
+#include <utility>
 #include <chrono>
 #include <mutex>
 #include <vector>
 
 namespace scallop {
 
+namespace {
+
+// Heights of the cells [i0, i1) x [j0, j1), a square region of at most regionCells a
+// side, with one candidate search for the whole region:
+//  1. the exact height at the region's centre names a winning segment W;
+//  2. W's swept solid is convex, so over the rectangle of cell centres its heights are
+//     at most its largest corner value: no cell ends higher than U = that (or than its
+//     current height), so only segments that can go below U anywhere in the region
+//     can matter;
+//  3. one gathering ray collects those, and each cell takes the exact minimum among
+//     them (lowestHeightAmong), which equals lowestHeight() cell by cell.
+void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int64_t j0,
+                int64_t j1, std::vector<uint32_t>& candidates, SweptScene::QueryCache& cache,
+                uint64_t& evals) {
+  const GridSpec& g = map.grid();
+  const double x0 = g.cellCentreX(i0), x1 = g.cellCentreX(i1 - 1);
+  const double y0 = g.cellCentreY(j0), y1 = g.cellCentreY(j1 - 1);
+  double ceiling = -HUGE_VAL;
+  for (int64_t j = j0; j < j1; ++j)
+    for (int64_t i = i0; i < i1; ++i) ceiling = std::max(ceiling, map.at(i, j));
+
+  uint32_t winner = UINT32_MAX;
+  scene.lowestHeight(0.5 * (x0 + x1), 0.5 * (y0 + y1), ceiling, evals, &cache, &winner);
+  double upper = ceiling;
+  if (winner != UINT32_MAX) {
+    const SweptSegment& w = scene.segments()[winner];
+    double cornerMax = -HUGE_VAL;
+    for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}}) {
+      const LowestPoint lp = w.lowestPoint(x, y);
+      ++evals;
+      cornerMax = std::max(cornerMax, lp.hit ? lp.z : HUGE_VAL);
+    }
+    upper = std::min(upper, cornerMax);
+  }
+  scene.gatherCandidates(x0, y0, x1, y1, upper, candidates);
+  for (int64_t j = j0; j < j1; ++j)
+    for (int64_t i = i0; i < i1; ++i)
+      map.at(i, j) = scene.lowestHeightAmong(candidates, g.cellCentreX(i), g.cellCentreY(j),
+                                             map.at(i, j), evals, &cache);
+}
+
+}  // namespace
+
 CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   const GridSpec& g = map.grid();
   const int64_t tile = std::max<int64_t>(1, options.tileCells);
   const int64_t tilesX = (g.nx + tile - 1) / tile, tilesY = (g.ny + tile - 1) / tile;
+  // Regions no wider than the scene's tile boxes were grown for; 1 means cell by cell.
+  const int64_t region = std::max<int64_t>(
+      1, std::min(options.regionCells,
+                  int64_t(std::floor(2 * scene.regionHalfSize() / g.spacing * (1 - 1e-9))) + 1));
 
   // Each work item is one square tile of cells; its evaluation count lands in its own
   // slot, so the totals are summed in a fixed order afterwards.
@@ -26,13 +75,23 @@ CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& option
   tbb::parallel_for(
       tbb::blocked_range2d<int64_t>(0, tilesY, 1, 0, tilesX, 1),
       [&](const tbb::blocked_range2d<int64_t>& r) {
+        std::vector<uint32_t> candidates;
         for (int64_t ty = r.rows().begin(); ty < r.rows().end(); ++ty) {
           for (int64_t tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
             uint64_t evals = 0;
+            SweptScene::QueryCache cache;
             const int64_t j1 = std::min(g.ny, (ty + 1) * tile), i1 = std::min(g.nx, (tx + 1) * tile);
-            for (int64_t j = ty * tile; j < j1; ++j)
-              for (int64_t i = tx * tile; i < i1; ++i)
-                map.at(i, j) = scene.lowestHeight(g.cellCentreX(i), g.cellCentreY(j), map.at(i, j), evals);
+            for (int64_t rj = ty * tile; rj < j1; rj += region) {
+              for (int64_t ri = tx * tile; ri < i1; ri += region) {
+                const int64_t ri1 = std::min(i1, ri + region), rj1 = std::min(j1, rj + region);
+                if (region == 1) {
+                  map.at(ri, rj) = scene.lowestHeight(g.cellCentreX(ri), g.cellCentreY(rj),
+                                                      map.at(ri, rj), evals, &cache);
+                } else {
+                  castRegion(scene, map, ri, ri1, rj, rj1, candidates, cache, evals);
+                }
+              }
+            }
             evaluations[size_t(ty * tilesX + tx)] = evals;
             const int64_t cells = (j1 - ty * tile) * (i1 - tx * tile);
             const int64_t now = done.fetch_add(cells) + cells;

@@ -6,4 +6,5 @@ cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 ./scripts/build.sh
 ./build/scallop simulate -o out/main "$@"
+./build/scallop validate -o out/validation
 echo "scallop: the height images are in $(pwd)/out/main/ (heights.exr, heights.gsf, preview.png, report.json)"

@@ -134,7 +134,18 @@ LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y
 
 SweptSegment::SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& end,
                            const Vec3& axis)
-    : cutter_(cutter), start_(start), end_(end), axis_(axis) {}
+    : cutter_(cutter), start_(start), end_(end), axis_(axis), delta_(end - start) {
+  // The frame of the plane P (step 1), the same for every vertical line.
+  w_ = std::hypot(delta_.x, delta_.y);
+  if (w_ > 1e-12) {
+    uHat_ = {delta_.x / w_, delta_.y / w_, 0};
+    m_ = {-uHat_.y, uHat_.x, 0};
+    sigma_ = delta_.z / w_;
+    n_ = normalize(Vec3{sigma_ * uHat_.x, sigma_ * uHat_.y, -1});
+    lowM_ = cutterSupport(cutter_, axis_, -m_);
+    highM_ = cutterSupport(cutter_, axis_, m_);
+  }
+}
 
 Box3 SweptSegment::bounds() const {
   // The cutter's box from its six axis-aligned support points, at both ends.
@@ -154,46 +165,27 @@ double SweptSegment::support(const Vec3& dir) const {
   return dot(dir, start_ + cutterSupport(cutter_, axis_, dir)) + std::max(0.0, dot(dir, d));
 }
 
-LowestPoint SweptSegment::lowestPoint(double x, double y) const {
-  const Vec3 d = end_ - start_;
-  const double w = std::hypot(d.x, d.y);  // horizontal length of the move
-  const double qx = x - start_.x, qy = y - start_.y;
-
-  // A plunge, a retract or a zero-length move: the cutter slides along l itself.
-  if (w <= 1e-12) {
-    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy);
-    lp.z += start_.z + std::min(0.0, d.z);
-    return lp;
-  }
-
-  // Step 1: the plane P through l parallel to d, in coordinates (u along d_xy, z).
-  const Vec3 uHat{d.x / w, d.y / w, 0};
-  const Vec3 m{-uHat.y, uHat.x, 0};  // unit normal of P
-  const double sigma = d.z / w;      // slope of the move in P
-  const double c = qx * m.x + qy * m.y;
-  const double u0 = qx * uHat.x + qy * uHat.y;
-
-  // Step 3: the support point of S = K n P in direction n = sigma u_hat - z_hat.
-  const Vec3 n = normalize(Vec3{sigma * uHat.x, sigma * uHat.y, -1});
-  // Directions n cos(theta) + m sin(theta), theta in [-pi/2, pi/2], parametrised
-  // without trigonometry by t = tan(theta / 2) in [-1, 1]: (1 - t^2) n + 2 t m points
-  // the same way, and support points do not depend on a direction's length.
+SweptSegment::Section SweptSegment::section(double c) const {
+  // Step 3: the support point of S = K n P in direction n = sigma u_hat - z_hat, where
+  // P is the plane at offset c along m. Directions n cos(theta) + m sin(theta), theta
+  // in [-pi/2, pi/2], are parametrised without trigonometry by t = tan(theta / 2) in
+  // [-1, 1]: (1 - t^2) n + 2 t m points the same way, and support points do not depend
+  // on a direction's length.
+  const Vec3& n = n_;
+  const Vec3& m = m_;
   auto direction = [&](double t) { return n * (1 - t * t) + m * (2 * t); };
+  Section out;
   double th1 = -1, th2 = 1;
-  Vec3 x1 = cutterSupport(cutter_, axis_, -m);
-  Vec3 x2 = cutterSupport(cutter_, axis_, m);
+  Vec3 x1 = lowM_, x2 = highM_;
   double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
-  if (f1 > 0 || f2 < 0) return {};  // P misses K, so l misses C
+  if (f1 > 0 || f2 < 0) return out;  // P misses K, so l misses C
 
-  // Root of the monotone f(t) = x_K(theta) . m - c by the Illinois variant of
-  // regula falsi (superlinear on the smooth torus and cylinder), with a bisection step
-  // every fourth iteration so that jumps (flat faces) still shrink the bracket.
+  // Root of the monotone f(t) = x_K(t) . m - c by the Illinois variant of regula falsi
+  // (superlinear on the smooth torus and cylinder), with a bisection step every fourth
+  // iteration so that jumps (flat faces) still shrink the bracket.
   const double tol = 1e-14 * (cutter_.radius + cutter_.fluteLength);
   double g1 = f1, g2 = f2;  // regula-falsi weights (Illinois halves the stale end's)
   int kept = 0;             // which end was replaced last: -1 low, +1 high
-  bool onPlane = false;
-  Vec3 ps;
-  double thRoot = 0;
   for (int iter = 0; iter < 200 && th2 - th1 > 1e-16; ++iter) {
     double th = 0.5 * (th1 + th2);
     if (iter % 4 != 3) {
@@ -203,10 +195,10 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
     const Vec3 xm = cutterSupport(cutter_, axis_, direction(th));
     const double fm = dot(xm, m) - c;
     if (std::fabs(fm) <= tol) {  // on P to round-off: move it onto P exactly
-      ps = xm - m * fm;
-      thRoot = th;
-      onPlane = true;
-      break;
+      out.hit = true;
+      out.point = xm - m * fm;
+      out.normal = normalize(direction(th));
+      return out;
     }
     if (fm < 0) {
       th1 = th, x1 = xm, f1 = fm, g1 = fm;
@@ -218,15 +210,46 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
       kept = +1;
     }
   }
-  if (!onPlane) {
-    // The bracket closed on a jump of the support point: a flat face (the bottom disk,
-    // the top disk or a side line). The chord between the two bracketing support
-    // points lies on that face, which is the support set, and crosses P.
-    const double lam = f2 > f1 ? -f1 / (f2 - f1) : 0.0;
-    ps = x1 + (x2 - x1) * lam;
-    thRoot = 0.5 * (th1 + th2);
+  // The bracket closed on a jump of the support point: a flat face (the bottom disk,
+  // the top disk or a side line). The chord between the two bracketing support points
+  // lies on that face, which is the support set, and crosses P.
+  const double lam = f2 > f1 ? -f1 / (f2 - f1) : 0.0;
+  out.hit = true;
+  out.point = x1 + (x2 - x1) * lam;
+  out.normal = normalize(direction(0.5 * (th1 + th2)));
+  return out;
+}
+
+LowestPoint SweptSegment::lowestPoint(double x, double y) const {
+  return lowestPoint(x, y, nullptr);
+}
+
+LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo) const {
+  const double qx = x - start_.x, qy = y - start_.y;
+
+  // A plunge, a retract or a zero-length move: the cutter slides along l itself.
+  if (w_ <= 1e-12) {
+    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy);
+    lp.z += start_.z + std::min(0.0, delta_.z);
+    return lp;
   }
-  const double vs = dot(ps, uHat);
+
+  // Step 1: the plane P through l parallel to d, in coordinates (u along d_xy, z).
+  const double c = qx * m_.x + qy * m_.y;
+  const double u0 = qx * uHat_.x + qy * uHat_.y;
+
+  // Step 3's search depends on c alone: reuse it along a line of cells
+  // parallel to the move. The memo is keyed by c's exact bits, so the result is the
+  // same with or without it.
+  Section sec;
+  if (memo && memo->owner == this && memo->offset == c) {
+    sec = memo->section;
+  } else {
+    sec = section(c);
+    if (memo) *memo = SectionMemo{this, c, sec};
+  }
+  if (!sec.hit) return {};
+  const double vs = dot(sec.point, uHat_);
 
   // Step 2: clamp the envelope point to the move.
   if (vs > u0) {  // the minimiser lies before the start: the cutter at t = 0
@@ -234,15 +257,15 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
     lp.z += start_.z;
     return lp;
   }
-  if (vs < u0 - w) {  // beyond the end: the cutter at t = 1
-    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx - d.x, qy - d.y);
+  if (vs < u0 - w_) {  // beyond the end: the cutter at t = 1
+    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx - delta_.x, qy - delta_.y);
     lp.z += end_.z;
     return lp;
   }
   LowestPoint out;
   out.hit = true;
-  out.z = start_.z + ps.z + (u0 - vs) * sigma;
-  out.normal = normalize(direction(thRoot));
+  out.z = start_.z + sec.point.z + (u0 - vs) * sigma_;
+  out.normal = sec.normal;
   return out;
 }
 

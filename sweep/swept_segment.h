@@ -20,13 +20,35 @@ struct LowestPoint {
   Vec3 normal;
 };
 
+class SweptSegment;
+
+// The plane section's support point (step 3 in swept_segment.cpp) for one offset of
+// the section plane; heights along a line parallel to the move share it.
+struct SweptSection {
+  bool hit = false;  // false: the section plane misses the cutter
+  Vec3 point;        // support point, tool frame (tip at the origin), mm
+  Vec3 normal;       // outward unit normal there
+};
+
+// A one-entry memo of the last section a caller needed from one segment. Keyed by the
+// segment and the exact bits of the offset, so results are identical with or without it.
+struct SectionMemo {
+  const SweptSegment* owner = nullptr;
+  double offset = 0;
+  SweptSection section;
+};
+
 class SweptSegment {
  public:
+  using Section = SweptSection;
+
   // `axis` must be a unit vector; `start`/`end` are tip positions, mm.
   SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& end, const Vec3& axis);
 
   // Exact lowest point of the swept solid on the vertical line through (x, y).
   LowestPoint lowestPoint(double x, double y) const;
+  // The same, reusing `memo` (which it updates) when the section plane is the same.
+  LowestPoint lowestPoint(double x, double y, SectionMemo* memo) const;
 
   // Tight axis-aligned bounds of the swept solid.
   Box3 bounds() const;
@@ -42,8 +64,14 @@ class SweptSegment {
   const Vec3& axis() const { return axis_; }
 
  private:
+  Section section(double offset) const;
+
   Cutter cutter_;
-  Vec3 start_, end_, axis_;
+  Vec3 start_, end_, axis_, delta_;
+  // Step 1's frame: horizontal length w_ of the move, its direction uHat_, the section
+  // plane normal m_, slope sigma_, the search direction n_, and K's extremes along m_.
+  double w_ = 0, sigma_ = 0;
+  Vec3 uHat_, m_, n_, lowM_, highM_;
 };
 
 // Support point of the stationary cutter (tip at origin, unit axis `axis`) in

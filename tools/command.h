@@ -25,5 +25,10 @@ struct Command {
 void addThreadsOption(CLI::App& command, CommonOptions& common);
 
 Command addSimulateCommand(CLI::App& parent, CommonOptions& common);
+Command addSurfaceCommand(CLI::App& parent, CommonOptions& common);
+Command addGougeCommand(CLI::App& parent, CommonOptions& common);
+Command addIntervalCommand(CLI::App& parent, CommonOptions& common);
+Command addValidateCommand(CLI::App& parent, CommonOptions& common);
+Command addBenchCommand(CLI::App& parent, CommonOptions& common);
 
 }  // namespace scallop

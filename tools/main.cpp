@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
   // Every subcommand, in the order --help lists them.
   std::vector<scallop::Command> commands;
   commands.push_back(scallop::addSimulateCommand(app, common));
+  commands.push_back(scallop::addSurfaceCommand(app, common));
+  commands.push_back(scallop::addGougeCommand(app, common));
+  commands.push_back(scallop::addIntervalCommand(app, common));
+  commands.push_back(scallop::addValidateCommand(app, common));
+  commands.push_back(scallop::addBenchCommand(app, common));
 
   try {
     app.parse(argc, argv);

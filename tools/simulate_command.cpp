@@ -15,6 +15,7 @@
 
 #include "analysis/scallop_profile.h"
 #include "raycast/simulation.h"
+#include "raycast/stamp_caster.h"
 #include "sweep/input_error.h"
 #include "tools/atomic_file.h"
 #include "tools/command.h"
@@ -75,7 +76,22 @@ int runSimulate(const SimulateArgs& args) {
   options.sweep.axisTolerance = job.axisTolerance;
   ProgressBar bar("simulating");
   options.cast.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
-  const SimulationResult sim = simulate(job.cutter, job.path, job.stock, grid, options);
+  SimulationResult sim;
+  double stampStep = 0;  // mm, --method stamp only
+  if (args.method == "stamp") {
+    // The classical z-map baseline (raycast/stamp_caster.h), reported in the same slots.
+    StampOptions stamp;
+    stamp.progress = options.cast.progress;
+    StampSimulationResult st = simulateStamped(job.cutter, job.path, job.stock, grid, options.sweep, stamp);
+    sim.map = std::move(st.map);
+    sim.scene.segments = st.segments;
+    sim.cast.cells = st.stamp.cells;
+    sim.cast.exactEvaluations = st.stamp.exactEvaluations;
+    sim.cast.seconds = st.stamp.seconds;
+    stampStep = st.stamp.minStep;
+  } else {
+    sim = simulate(job.cutter, job.path, job.stock, grid, options);
+  }
   bar.finish();
 
   // --- Outputs, each written to a temporary name and renamed when complete. ---------
@@ -104,6 +120,8 @@ int runSimulate(const SimulateArgs& args) {
                {"ny", grid.ny},
                {"cell_centre", "origin + (index + 1/2) * spacing"},
                {"units", "mm"}};
+  r["method"] = args.method;
+  if (args.method == "stamp") r["stamp_step_mm"] = stampStep;
   r["sweep"] = {{"cutting_moves", job.path.cuttingMoves()},
                 {"swept_segments", sim.scene.segments},
                 {"axis_tolerance_mm", job.axisTolerance},
@@ -171,6 +189,11 @@ Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
       ->capture_default_str();
   addThreadsOption(*app, common);
   app->add_flag("--json", args->json, "Print report.json on stdout (and nothing else there)");
+  app->add_option("--method", args->method,
+                  "exact: exact swept-solid heights (default); stamp: classical z-map baseline,\n"
+                  "the cutter stamped along each move at a step whose scallop is <= 1e-4 mm")
+      ->check(CLI::IsMember({"exact", "stamp"}))
+      ->capture_default_str();
   app->add_flag("--print-default-job", *printDefault,
                 "Print the built-in default job file and exit");
   return {app, [args, printDefault, &common]() {

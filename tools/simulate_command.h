@@ -11,6 +11,7 @@ struct SimulateArgs {
   std::string outDir = "scallop-out";
   int threads = 0;       // 0: all cores
   bool json = false;     // print report.json on stdout
+  std::string method = "exact";  // "exact" or "stamp" (raycast/stamp_caster.h)
 };
 
 // Returns the process exit status; throws InputError for bad input.

@@ -1,0 +1,100 @@
+// The z-map caster: region queries, memos and threads change the speed, never a bit.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+
+#include "raycast/simulation.h"
+#include "raycast/zmap_caster.h"
+#include "sweep/raster.h"
+#include "sweep/tool_path_sweep.h"
+
+namespace scallop {
+namespace {
+
+// A raster with lead and tilt, and a curved 5-axis path of short moves whose axis turns.
+struct Fixture {
+  Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);
+  Box3 stock;
+  ToolPath path;
+};
+
+Fixture rasterFixture() {
+  Fixture f;
+  f.stock.extend({0, 0, -3});
+  f.stock.extend({4, 3, 0});
+  RasterSpec spec;
+  spec.stepOver = 1.1;
+  spec.depth = 0.4;
+  spec.leadDeg = 7;
+  spec.tiltDeg = 3;
+  spec.zigzag = true;
+  f.path = makeRaster(f.cutter, f.stock, spec);
+  return f;
+}
+
+Fixture freeformFixture() {
+  Fixture f;
+  f.stock.extend({0, 0, -3});
+  f.stock.extend({4, 3, 0});
+  // Each move holds the (leaned) surface normal of its midpoint as its axis, as a 5-axis
+  // post-processor's linear moves do; the axis jumps between moves.
+  auto tipAt = [](double x, double y) { return Vec3{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)}; };
+  for (double y = -0.5; y <= 3.5; y += 0.9) {
+    for (int k = 0; k < 60; ++k) {
+      const double xa = -3.5 + 0.18 * k, xb = xa + 0.18, xm = 0.5 * (xa + xb);
+      const Vec3 normal = normalize(Vec3{-0.2 * std::cos(xm) * std::cos(y), 0.2 * std::sin(xm) * std::sin(y), 1});
+      const Vec3 axis = normalize(normal + Vec3{0.08, 0, 0});
+      f.path.moves.push_back(Move{{tipAt(xa, y), axis}, {tipAt(xb, y), axis}, false});
+    }
+  }
+  return f;
+}
+
+ZMap cast(const Fixture& f, double spacing, int64_t regionCells, int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+  const GridSpec grid = gridCovering(f.stock.min.x, f.stock.min.y, f.stock.max.x, f.stock.max.y, spacing);
+  SimulationOptions options;
+  options.cast.regionCells = regionCells;
+  return simulate(f.cutter, f.path, f.stock, grid, options).map;
+}
+
+TEST(ZMapCaster, RegionQueriesEqualCellByCellBitForBit) {
+  for (const Fixture& f : {rasterFixture(), freeformFixture()}) {
+    const ZMap cellByCell = cast(f, 0.013, 1, 2);
+    for (int64_t region : {4, 16, 33}) {
+      const ZMap regions = cast(f, 0.013, region, 2);
+      ASSERT_EQ(regions.heights().size(), cellByCell.heights().size());
+      EXPECT_EQ(regions.heights(), cellByCell.heights()) << "region " << region;
+    }
+    // Something was really cut, or the comparison would prove nothing.
+    EXPECT_LT(cellByCell.minHeight(), f.stock.max.z - 0.1);
+  }
+}
+
+TEST(ZMapCaster, ThreadCountDoesNotChangeABit) {
+  const Fixture f = freeformFixture();
+  EXPECT_EQ(cast(f, 0.011, 16, 1).heights(), cast(f, 0.011, 16, 2).heights());
+}
+
+TEST(ZMapCaster, EveryCellIsTheMinimumOverAllSegments) {
+  // Against the definition with no culling at all: each cell's height is the minimum of
+  // the stock top and every swept segment's exact lowest point.
+  const Fixture f = freeformFixture();
+  const ZMap map = cast(f, 0.05, 16, 2);
+  const std::vector<SweptSegment> segs = sweepToolPath(f.cutter, f.path);
+  const GridSpec& g = map.grid();
+  for (int64_t j = 0; j < g.ny; j += 3) {
+    for (int64_t i = 0; i < g.nx; i += 3) {
+      double want = f.stock.max.z;
+      for (const SweptSegment& s : segs) {
+        const LowestPoint lp = s.lowestPoint(g.cellCentreX(i), g.cellCentreY(j));
+        if (lp.hit) want = std::min(want, lp.z);
+      }
+      ASSERT_EQ(map.at(i, j), want) << i << " " << j;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace scallop

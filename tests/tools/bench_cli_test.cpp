@@ -1,0 +1,86 @@
+// `scallop bench`: runs, prints the documented JSON keys, and its heights are those of
+// a direct simulate() call, bit for bit.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "raycast/simulation.h"
+#include "tools/bench_cases.h"
+
+namespace scallop {
+namespace {
+
+struct BenchRun {
+  int status = -1;
+  std::string out;
+};
+
+BenchRun runScallop(const std::string& args) {
+  BenchRun r;
+  const std::string cmd = std::string(SCALLOP_BINARY) + " " + args + " 2>/dev/null";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+TEST(BenchCli, QuickCaseB1PrintsTheDocumentedJson) {
+  const BenchRun r = runScallop("bench --quick --case B1 --area 2 --stamp-window 0.5 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);  // stdout is JSON and only JSON
+  ASSERT_EQ(doc["cases"].size(), 1u);
+  const nlohmann::json& c = doc["cases"][0];
+  for (const char* key : {"name", "cells", "moves", "evals_per_cell", "seconds", "mcells_per_s",
+                          "peak_rss_mb", "speedup_2v1"})
+    EXPECT_TRUE(c.contains(key)) << key;
+  EXPECT_EQ(c["name"], "B1");
+  EXPECT_EQ(c["cells"], 200 * 200);
+  EXPECT_GT(c["mcells_per_s"].get<double>(), 0);
+  ASSERT_TRUE(doc["stamp_ratio"].contains("B1"));
+  EXPECT_GT(doc["stamp_ratio"]["B1"].get<double>(), 0);
+  EXPECT_LE(doc["stamp"]["B1"]["max_error_mm"].get<double>(), 1e-4);
+  EXPECT_GE(doc["stamp"]["B1"]["min_difference_mm"].get<double>(), -1e-9);
+
+  // The same case through simulate(), as `scallop simulate` runs it: same heights.
+  BenchCaseOptions options;
+  options.quick = true;
+  options.area = 2;
+  const BenchCase b = makeBenchCase("B1", options);
+  const SimulationResult sim = simulate(b.cutter, b.path, b.stock, b.grid);
+  EXPECT_EQ(c["heights_hash"].get<std::string>(), fmt::format("{:016x}", heightsHash(sim.map)));
+}
+
+TEST(BenchCli, TableOnStdoutAndUsageErrors) {
+  const BenchRun table = runScallop("bench --quick --case B3 --area 1 --no-stamp --threads 1");
+  ASSERT_EQ(table.status, 0);
+  EXPECT_NE(table.out.find("Mcells/s"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("B3"), std::string::npos) << table.out;
+  EXPECT_EQ(runScallop("bench --case B9").status, 2);
+  EXPECT_EQ(runScallop("bench --area -1").status, 2);
+}
+
+TEST(BenchCases, FreeformPathHoldsOneAxisPerMove) {
+  BenchCaseOptions options;
+  options.area = 1;
+  const BenchCase b = makeBenchCase("B3", options);
+  ASSERT_GT(b.path.cuttingMoves(), 0u);
+  for (const Move& mv : b.path.moves) {
+    if (mv.rapid) continue;
+    // Each move holds one unit axis (see makeFreeformPath for why).
+    EXPECT_NEAR(length(mv.from.axis), 1.0, 1e-12);
+    EXPECT_EQ(mv.from.axis, mv.to.axis);
+  }
+  EXPECT_EQ(b.grid.spacing, 0.002);
+  EXPECT_EQ(makeBenchCase("B2", options).path.cuttingMoves(), 2u * 180u);
+}
+
+}  // namespace
+}  // namespace scallop
