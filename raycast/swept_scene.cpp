@@ -118,7 +118,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   ++cell->evaluations;
   SectionMemo* memo =
       cell->cache ? &cell->cache->memo[tile.segment % SweptScene::QueryCache::kSlots] : nullptr;
-  const LowestPoint lp = seg.lowestPoint(cell->x, cell->y, memo);
+  const LowestPoint lp = seg.lowestPoint(cell->x, cell->y, memo, cell->best);
   if (!lp.hit || !(lp.z < cell->best)) return;
   cell->best = lp.z;
   cell->winner = tile.segment;
@@ -352,14 +352,24 @@ uint32_t SweptScene::segmentOfCandidate(uint32_t candidate) const {
 double SweptScene::lowestHeightAmong(const std::vector<uint32_t>& candidates, double x, double y,
                                      double ceiling, uint64_t& evaluations,
                                      QueryCache* cache) const {
-  double best = ceiling;
+  // Branch and bound: every candidate's plane bound at (x, y) first, then exact
+  // evaluations in ascending order of bound, stopping at the first bound that cannot
+  // beat the best height found. The minimum does not depend on the order.
+  thread_local std::vector<std::pair<double, uint32_t>> order;
+  order.clear();
   for (uint32_t id : candidates) {
-    const TileBox& tile = impl_->tiles[id];
-    const double bound = planeBoundAt(tile, x, y);
-    if (bound - planeSlack(bound) >= best) continue;
+    const double bound = planeBoundAt(impl_->tiles[id], x, y);
+    const double safe = bound - planeSlack(bound);
+    if (safe < ceiling) order.emplace_back(safe, id);
+  }
+  std::sort(order.begin(), order.end());
+  double best = ceiling;
+  for (const auto& [bound, id] : order) {
+    if (bound >= best) break;
+    const uint32_t segment = impl_->tiles[id].segment;
     ++evaluations;
-    SectionMemo* memo = cache ? &cache->memo[tile.segment % QueryCache::kSlots] : nullptr;
-    const LowestPoint lp = impl_->segments[tile.segment].lowestPoint(x, y, memo);
+    SectionMemo* memo = cache ? &cache->memo[segment % QueryCache::kSlots] : nullptr;
+    const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, best);
     if (lp.hit && lp.z < best) best = lp.z;
   }
   return best;

@@ -43,7 +43,7 @@ class SweptScene {
   // Scratch for one thread's consecutive queries: a memo of each segment's last plane
   // section (direct-mapped by segment). Results do not depend on it, only speed does.
   struct QueryCache {
-    static constexpr size_t kSlots = 32;
+    static constexpr size_t kSlots = 128;
     SectionMemo memo[kSlots];
   };
 

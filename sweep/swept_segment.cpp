@@ -63,6 +63,30 @@ DistanceToCore distanceToCore(const Cutter& c, const Vec3& a, const Vec3& p) {
   return {dist, grad};
 }
 
+// A support point of K in direction v and its derivative along dv (d/dt of the support
+// point of v + t dv at t = 0), on the smooth parts (the torus and the top rim); used by
+// the Newton steps of the section search. Mirrors cutterSupport's case split.
+struct SupportWithSlope {
+  Vec3 point, slope;
+};
+
+SupportWithSlope supportWithSlope(const Cutter& c, const Vec3& a, const Vec3& v, const Vec3& dv) {
+  const double va = dot(v, a);
+  Vec3 perp = v - a * va;
+  perp -= a * dot(perp, a);
+  const double lp = length(perp);
+  if (!(lp > 1e-14 * length(v))) return {cutterSupport(c, a, v), Vec3{}};
+  const Vec3 e = perp / lp;
+  const Vec3 dperp = dv - a * dot(dv, a);
+  const Vec3 de = (dperp - e * dot(e, dperp)) / lp;
+  if (va > 0) return {a * c.fluteLength + e * c.radius, de * c.radius};
+  const double len = length(v);
+  const Vec3 vh = v / len;
+  const Vec3 dvh = (dv - vh * dot(vh, dv)) / len;
+  return {a * c.cornerRadius + e * c.bottomRadius() + vh * c.cornerRadius,
+          de * c.bottomRadius() + dvh * c.cornerRadius};
+}
+
 }  // namespace
 
 Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
@@ -180,35 +204,45 @@ SweptSegment::Section SweptSegment::section(double c) const {
   double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
   if (f1 > 0 || f2 < 0) return out;  // P misses K, so l misses C
 
-  // Root of the monotone f(t) = x_K(t) . m - c by the Illinois variant of regula falsi
-  // (superlinear on the smooth torus and cylinder), with a bisection step every fourth
-  // iteration so that jumps (flat faces) still shrink the bracket.
+  // Root of the monotone f(t) = x_K(t) . m - c by Newton's method with the analytic
+  // slope of the support point, safeguarded by the bracket [th1, th2] (as in
+  // Numerical Recipes' rtsafe): a step that leaves the bracket, a non-positive slope,
+  // or a step that does not at least halve the previous one falls back to bisection, so
+  // jumps of the support point (flat faces) are still found.
   const double tol = 1e-14 * (cutter_.radius + cutter_.fluteLength);
-  double g1 = f1, g2 = f2;  // regula-falsi weights (Illinois halves the stale end's)
-  int kept = 0;             // which end was replaced last: -1 low, +1 high
+  // Start where a ball of radius R would put the root: sin(theta) = c / R.
+  const double s0 = std::clamp(c / cutter_.radius, -0.999, 0.999);
+  double th = s0 / (1 + std::sqrt(1 - s0 * s0));  // tan(theta / 2)
+  double stepBefore = th2 - th1;
   for (int iter = 0; iter < 200 && th2 - th1 > 1e-16; ++iter) {
-    double th = 0.5 * (th1 + th2);
-    if (iter % 4 != 3) {
-      const double rf = th1 - g1 * (th2 - th1) / (g2 - g1);
-      if (rf > th1 && rf < th2) th = rf;
+    const Vec3 v = direction(th);
+    const Vec3 dv = n * (-2 * th) + m * 2;
+    const SupportWithSlope sw = supportWithSlope(cutter_, axis_, v, dv);
+    const double fm = dot(sw.point, m) - c;
+    const double slope = dot(sw.slope, m);
+    const bool converged = std::fabs(fm) <= tol;
+    if (fm < 0) {
+      th1 = th, x1 = sw.point, f1 = fm;
+    } else {
+      th2 = th, x2 = sw.point, f2 = fm;
     }
-    const Vec3 xm = cutterSupport(cutter_, axis_, direction(th));
-    const double fm = dot(xm, m) - c;
-    if (std::fabs(fm) <= tol) {  // on P to round-off: move it onto P exactly
+    const double newton = slope > 0 ? fm / slope : HUGE_VAL;
+    double step;
+    if (!converged && th - newton > th1 && th - newton < th2 &&
+        std::fabs(2 * newton) <= std::fabs(stepBefore)) {
+      step = newton;
+    } else {
+      step = th - 0.5 * (th1 + th2);
+    }
+    if (converged || (std::fabs(newton) <= 1e-16 && std::fabs(fm) <= 1e3 * tol)) {
+      // On P to round-off (or Newton has stalled there): move it onto P exactly.
       out.hit = true;
-      out.point = xm - m * fm;
-      out.normal = normalize(direction(th));
+      out.point = sw.point - m * fm;
+      out.normal = normalize(v);
       return out;
     }
-    if (fm < 0) {
-      th1 = th, x1 = xm, f1 = fm, g1 = fm;
-      if (kept == -1) g2 *= 0.5;
-      kept = -1;
-    } else {
-      th2 = th, x2 = xm, f2 = fm, g2 = fm;
-      if (kept == +1) g1 *= 0.5;
-      kept = +1;
-    }
+    stepBefore = step;
+    th -= step;
   }
   // The bracket closed on a jump of the support point: a flat face (the bottom disk,
   // the top disk or a side line). The chord between the two bracketing support points
@@ -224,7 +258,8 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
   return lowestPoint(x, y, nullptr);
 }
 
-LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo) const {
+LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo,
+                                      double cutoff) const {
   const double qx = x - start_.x, qy = y - start_.y;
 
   // A plunge, a retract or a zero-length move: the cutter slides along l itself.
@@ -250,6 +285,11 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo) con
   }
   if (!sec.hit) return {};
   const double vs = dot(sec.point, uHat_);
+  // The unclamped minimum (the envelope line through the support point) bounds the
+  // clamped one from below, so a move that cannot beat `cutoff` is dropped here,
+  // before the Newton iterations of the end cases.
+  const double envelopeZ = start_.z + sec.point.z + (u0 - vs) * sigma_;
+  if (envelopeZ >= cutoff) return {};
 
   // Step 2: clamp the envelope point to the move.
   if (vs > u0) {  // the minimiser lies before the start: the cutter at t = 0
@@ -264,7 +304,7 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo) con
   }
   LowestPoint out;
   out.hit = true;
-  out.z = start_.z + sec.point.z + (u0 - vs) * sigma_;
+  out.z = envelopeZ;
   out.normal = sec.normal;
   return out;
 }
