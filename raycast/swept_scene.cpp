@@ -26,6 +26,8 @@ struct TilePlane {
   double a, b, c;
 };
 constexpr int kPlanesPerTile = 5;
+// Exact evaluations (centre first, then corners) that give each tile its planes.
+constexpr int kSamplesPerTile = 5;
 struct TileBox {
   float lower[3];
   float upper[3];
@@ -193,7 +195,7 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
         t.planes = 0;
         const double sx[5] = {0.5 * (x0 + x1), x0, x1, x0, x1};
         const double sy[5] = {0.5 * (y0 + y1), y0, y0, y1, y1};
-        for (int s = 0; s < 5; ++s) {
+        for (int s = 0; s < kSamplesPerTile; ++s) {
           const LowestPoint lp = seg.lowestPoint(sx[s], sy[s]);
           ++evalsPerSegment[k];
           if (!lp.hit || lp.normal.z > -1e-3) continue;
@@ -320,36 +322,49 @@ double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& ev
 }
 
 void SweptScene::gatherCandidates(double x0, double y0, double x1, double y1, double ceiling,
-                                  std::vector<uint32_t>& candidates) const {
+                                  std::vector<Candidate>& candidates) const {
   candidates.clear();
   if (impl_->tiles.empty()) return;
   if (std::max(x1 - x0, y1 - y0) > 2 * regionHalfSize_ * (1 + 1e-12))
     throw std::logic_error("gatherCandidates: region larger than the scene was built for");
   const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  thread_local std::vector<uint32_t> tiles;
+  tiles.clear();
   CellContext cell = makeContext(cx, cy, impl_->originZ, ceiling, nullptr);
   cell.gathering = true;
   cell.x0 = x0, cell.y0 = y0, cell.x1 = x1, cell.y1 = y1;
-  cell.gathered = &candidates;
+  cell.gathered = &tiles;
   RTCRayHit rh = upwardRay(cx, cy, impl_->originZ, ceiling);
   rtcIntersect1(impl_->scene, &cell.embree, &rh);
   // One tile per segment is enough: every tile's planes bound its whole segment. Kept in
   // a canonical order, so the work done does not depend on Embree's traversal order.
-  std::sort(candidates.begin(), candidates.end(), [&](uint32_t a, uint32_t b) {
+  std::sort(tiles.begin(), tiles.end(), [&](uint32_t a, uint32_t b) {
     const uint32_t sa = impl_->tiles[a].segment, sb = impl_->tiles[b].segment;
     return sa != sb ? sa < sb : a < b;
   });
-  candidates.erase(std::unique(candidates.begin(), candidates.end(),
-                               [&](uint32_t a, uint32_t b) {
-                                 return impl_->tiles[a].segment == impl_->tiles[b].segment;
-                               }),
-                   candidates.end());
+  for (uint32_t id : tiles) {
+    const uint32_t segment = impl_->tiles[id].segment;
+    if (candidates.empty() || candidates.back().segment != segment)
+      candidates.push_back(Candidate{id, segment});
+  }
 }
 
-uint32_t SweptScene::segmentOfCandidate(uint32_t candidate) const {
-  return impl_->tiles[candidate].segment;
+void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x, double y,
+                                   uint64_t& evaluations, QueryCache* cache) const {
+  for (Candidate& cand : candidates) {
+    const SweptSegment& seg = impl_->segments[cand.segment];
+    SectionMemo* memo = cache ? &cache->memo[cand.segment % QueryCache::kSlots] : nullptr;
+    ++evaluations;
+    const LowestPoint lp = seg.lowestPoint(x, y, memo);
+    if (!lp.hit || lp.normal.z > -1e-3) continue;
+    // N . p <= h_C(N) on the solid, N.z < 0:  z >= (h - N.x x - N.y y) / N.z.
+    const Vec3& N = lp.normal;
+    const double h = seg.support(N);
+    cand.a = h / N.z, cand.b = -N.x / N.z, cand.c = -N.y / N.z;
+  }
 }
 
-double SweptScene::lowestHeightAmong(const std::vector<uint32_t>& candidates, double x, double y,
+double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates, double x, double y,
                                      double ceiling, uint64_t& evaluations,
                                      QueryCache* cache) const {
   // Branch and bound: every candidate's plane bound at (x, y) first, then exact
@@ -357,16 +372,18 @@ double SweptScene::lowestHeightAmong(const std::vector<uint32_t>& candidates, do
   // beat the best height found. The minimum does not depend on the order.
   thread_local std::vector<std::pair<double, uint32_t>> order;
   order.clear();
-  for (uint32_t id : candidates) {
-    const double bound = planeBoundAt(impl_->tiles[id], x, y);
+  for (uint32_t k = 0; k < candidates.size(); ++k) {
+    const Candidate& cand = candidates[k];
+    const double bound = std::max(planeBoundAt(impl_->tiles[cand.tile], x, y),
+                                  cand.a + cand.b * x + cand.c * y);
     const double safe = bound - planeSlack(bound);
-    if (safe < ceiling) order.emplace_back(safe, id);
+    if (safe < ceiling) order.emplace_back(safe, k);
   }
   std::sort(order.begin(), order.end());
   double best = ceiling;
-  for (const auto& [bound, id] : order) {
+  for (const auto& [bound, k] : order) {
     if (bound >= best) break;
-    const uint32_t segment = impl_->tiles[id].segment;
+    const uint32_t segment = candidates[k].segment;
     ++evaluations;
     SectionMemo* memo = cache ? &cache->memo[segment % QueryCache::kSlots] : nullptr;
     const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, best);

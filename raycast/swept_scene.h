@@ -10,6 +10,7 @@
 // double by SweptSegment::lowestPoint.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -55,12 +56,27 @@ class SweptScene {
                       QueryCache* cache = nullptr, uint32_t* winner = nullptr) const;
 
   // --- Region queries: one Embree ray for a whole square of cells ---------------------
+  // A segment that may be lowest somewhere in a region, with one extra lower-bound plane
+  // z >= a + b x + c y of its own (none until tightenCandidates).
+  struct Candidate {
+    uint32_t tile;
+    uint32_t segment;
+    double a = -HUGE_VAL, b = 0, c = 0;
+  };
   // Every segment that can be lower than `ceiling` somewhere in [x0, x1] x [y0, y1]
-  // (one candidate per segment). The region's half side must not exceed
-  // SceneOptions::regionHalfSize.
+  // (one candidate per segment, in segment order). The region's half side must not
+  // exceed SceneOptions::regionHalfSize.
   void gatherCandidates(double x0, double y0, double x1, double y1, double ceiling,
-                        std::vector<uint32_t>& candidates) const;
-  uint32_t segmentOfCandidate(uint32_t candidate) const;
+                        std::vector<Candidate>& candidates) const;
+  // Gives each candidate the supporting plane of its swept solid below (x, y) (one
+  // exact evaluation each): near (x, y) it is far tighter than the tile planes.
+  void tightenCandidates(std::vector<Candidate>& candidates, double x, double y,
+                         uint64_t& evaluations, QueryCache* cache = nullptr) const;
+  // The lowest height at (x, y) among the candidates, or `ceiling`: the same value
+  // lowestHeight() returns for any (x, y) inside the gathered region.
+  double lowestHeightAmong(const std::vector<Candidate>& candidates, double x, double y,
+                           double ceiling, uint64_t& evaluations,
+                           QueryCache* cache = nullptr) const;
   double regionHalfSize() const { return regionHalfSize_; }
   // The lowest height at (x, y) among the candidates, or `ceiling`: the same value
   // lowestHeight() returns for any (x, y) inside the gathered region.

@@ -22,10 +22,11 @@ namespace {
 //     at most its largest corner value: no cell ends higher than U = that (or than its
 //     current height), so only segments that can go below U anywhere in the region
 //     can matter;
-//  3. one gathering ray collects those, and each cell takes the exact minimum among
-//     them (lowestHeightAmong), which equals lowestHeight() cell by cell.
+//  3. one gathering ray collects those (each also gets the supporting plane of its
+//     solid below the centre), and each cell takes the exact minimum among them
+//     (lowestHeightAmong), which equals lowestHeight() cell by cell.
 void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int64_t j0,
-                int64_t j1, std::vector<uint32_t>& candidates, SweptScene::QueryCache& cache,
+                int64_t j1, std::vector<SweptScene::Candidate>& candidates, SweptScene::QueryCache& cache,
                 uint64_t& evals) {
   const GridSpec& g = map.grid();
   const double x0 = g.cellCentreX(i0), x1 = g.cellCentreX(i1 - 1);
@@ -48,6 +49,10 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
     upper = std::min(upper, cornerMax);
   }
   scene.gatherCandidates(x0, y0, x1, y1, upper, candidates);
+  // Many candidates (short moves): one exact evaluation each at the centre buys a tight
+  // plane that saves many per cell. With few, the tile planes do.
+  if (candidates.size() > 4)
+    scene.tightenCandidates(candidates, 0.5 * (x0 + x1), 0.5 * (y0 + y1), evals, &cache);
   for (int64_t j = j0; j < j1; ++j)
     for (int64_t i = i0; i < i1; ++i)
       map.at(i, j) = scene.lowestHeightAmong(candidates, g.cellCentreX(i), g.cellCentreY(j),
@@ -75,7 +80,7 @@ CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& option
   tbb::parallel_for(
       tbb::blocked_range2d<int64_t>(0, tilesY, 1, 0, tilesX, 1),
       [&](const tbb::blocked_range2d<int64_t>& r) {
-        std::vector<uint32_t> candidates;
+        std::vector<SweptScene::Candidate> candidates;
         for (int64_t ty = r.rows().begin(); ty < r.rows().end(); ++ty) {
           for (int64_t tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
             uint64_t evals = 0;
