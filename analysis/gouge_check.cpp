@@ -99,14 +99,16 @@ Penetration cylinderPenetration(const TriangleMesh& mesh, const std::vector<uint
 
 ZMap designHeights(const MeshIndex& index, const GridSpec& grid) {
   ZMap map(grid, std::nan(""));
-  tbb::parallel_for(tbb::blocked_range<int64_t>(0, grid.ny), [&](const tbb::blocked_range<int64_t>& rows) {
-    for (int64_t j = rows.begin(); j < rows.end(); ++j)
-      for (int64_t i = 0; i < grid.nx; ++i) {
-        double z;
-        uint32_t t;
-        if (index.topHeight(grid.cellCentreX(i), grid.cellCentreY(j), z, t)) map.at(i, j) = z;
-      }
-  });
+  tbb::parallel_for(tbb::blocked_range<int64_t>(0, grid.ny),
+                    [&](const tbb::blocked_range<int64_t>& rows) {
+                      for (int64_t j = rows.begin(); j < rows.end(); ++j)
+                        for (int64_t i = 0; i < grid.nx; ++i) {
+                          double z;
+                          uint32_t t;
+                          if (index.topHeight(grid.cellCentreX(i), grid.cellCentreY(j), z, t))
+                            map.at(i, j) = z;
+                        }
+                    });
   return map;
 }
 

@@ -31,10 +31,10 @@
 namespace scallop {
 
 struct Cylinder {
-  Vec3 tip;             // centre of the bottom disk, mm
-  Vec3 axis;            // unit, tip -> shank
-  double radius = 0;    // R, mm
-  double length = 0;    // L, mm (the flute length)
+  Vec3 tip;           // centre of the bottom disk, mm
+  Vec3 axis;          // unit, tip -> shank
+  double radius = 0;  // R, mm
+  double length = 0;  // L, mm (the flute length)
 };
 
 // Seed 004 §2.3: the vertex lies inside the tool when 0 <= y_T <= `length` along the
@@ -50,8 +50,8 @@ bool vertexInside(const Vec3& v, const Cylinder& c, double tolerance);
 double trianglePenetration(const std::array<Vec3, 3>& tri, const Cylinder& c);
 
 struct Penetration {
-  double depth = 0;           // mm, max over the candidates
-  int64_t triangle = -1;      // the deepest triangle, -1 if depth == 0
+  double depth = 0;       // mm, max over the candidates
+  int64_t triangle = -1;  // the deepest triangle, -1 if depth == 0
 };
 Penetration cylinderPenetration(const TriangleMesh& mesh, const std::vector<uint32_t>& candidates,
                                 const Cylinder& c);

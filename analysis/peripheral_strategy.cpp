@@ -16,15 +16,21 @@ constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 const char* toString(PostureClass c) {
   switch (c) {
-    case PostureClass::FreeInitial: return "free_initial";
-    case PostureClass::Inclined: return "inclined";
-    case PostureClass::Reversed: return "reversed";
-    case PostureClass::NonMachinable: return "non_machinable";
+    case PostureClass::FreeInitial:
+      return "free_initial";
+    case PostureClass::Inclined:
+      return "inclined";
+    case PostureClass::Reversed:
+      return "reversed";
+    case PostureClass::NonMachinable:
+      return "non_machinable";
   }
   return "?";
 }
 
-const char* toString(InclinationAxis a) { return a == InclinationAxis::Normal ? "normal" : "feed"; }
+const char* toString(InclinationAxis a) {
+  return a == InclinationAxis::Normal ? "normal" : "feed";
+}
 
 Pose peripheralPose(const Vec3& cc, const Vec3& n, const Vec3& f, double alphaDeg,
                     InclinationAxis axis, const Cutter& cutter, double ccAxialPosition) {
@@ -48,8 +54,12 @@ Pose peripheralPose(const Vec3& cc, const Vec3& n, const Vec3& f, double alphaDe
 
 namespace {
 
-Vec3 unitAxis(char c) { return c == 'x' ? Vec3{1, 0, 0} : Vec3{0, 1, 0}; }
-double coord(const Vec3& p, char c) { return c == 'x' ? p.x : p.y; }
+Vec3 unitAxis(char c) {
+  return c == 'x' ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+}
+double coord(const Vec3& p, char c) {
+  return c == 'x' ? p.x : p.y;
+}
 
 struct Piece {
   Vec3 p, q;  // ordered along the feed
@@ -69,7 +79,8 @@ std::vector<CcPoint> slicingCcPoints(const TriangleMesh& mesh, const StrategyOpt
   // §2.1: planes spaced by the effective tool length, centred on the part so that
   // neither rim gets a plane exactly on its boundary edges.
   const int64_t count = std::max<int64_t>(1, int64_t(std::ceil((hi - lo) / spacing - 1e-9)));
-  if (count > 1000000) throw InputError("--slice-spacing", "gives more than a million slicing planes");
+  if (count > 1000000)
+    throw InputError("--slice-spacing", "gives more than a million slicing planes");
   std::vector<double> planes;
   for (int64_t k = 0; k < count; ++k)
     planes.push_back(0.5 * (lo + hi) + (double(k) - 0.5 * double(count - 1)) * spacing);
@@ -116,7 +127,8 @@ std::vector<CcPoint> slicingCcPoints(const TriangleMesh& mesh, const StrategyOpt
       Vec3 f = normalize(cross(planeNormal, mesh.normals[s.triangle]));
       if (dot(f, feedDir) < 0 || (dot(f, feedDir) == 0 && f.z < 0)) f = -f;
       const double len = length(s.q - s.p);
-      const int n = options.ccStep > 0 ? std::max(1, int(std::ceil(len / options.ccStep - 1e-9))) : 1;
+      const int n =
+          options.ccStep > 0 ? std::max(1, int(std::ceil(len / options.ccStep - 1e-9))) : 1;
       for (int i = 0; i < n; ++i) {
         CcPoint cc;
         cc.plane = int(pi);
@@ -147,8 +159,8 @@ struct Search {
     return true;
   }
   double exact(const Pose& pose, const std::vector<uint32_t>& tris, int64_t* deepest) const {
-    const Penetration p =
-        cylinderPenetration(index.mesh(), tris, {pose.tip, pose.axis, cutter.radius, cutter.fluteLength});
+    const Penetration p = cylinderPenetration(
+        index.mesh(), tris, {pose.tip, pose.axis, cutter.radius, cutter.fluteLength});
     if (deepest) *deepest = p.triangle;
     return p.depth;
   }
@@ -173,8 +185,8 @@ struct Search {
     std::sort(verts.begin(), verts.end());
     verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
 
-    const Pose initial = peripheralPose(cc.point, n, cc.feed * sigma, 0, opt.inclinationAxis, cutter,
-                                        opt.ccAxialPosition);
+    const Pose initial = peripheralPose(cc.point, n, cc.feed * sigma, 0, opt.inclinationAxis,
+                                        cutter, opt.ccAxialPosition);
     r.initialVertexFree = vertexFree(initial, verts);
     r.initialExactDepth = exact(initial, tris, nullptr);
 
@@ -185,9 +197,10 @@ struct Search {
         for (double sign : {1.0, -1.0}) {
           if (sign < 0 && (k == 0 || !opt.inclineBothWays)) continue;
           const double alpha = sign * k * opt.inclinationStepDeg;
-          const Pose pose = o == 0 && k == 0 ? initial
-                                             : peripheralPose(cc.point, n, f, alpha, opt.inclinationAxis,
-                                                              cutter, opt.ccAxialPosition);
+          const Pose pose = o == 0 && k == 0
+                                ? initial
+                                : peripheralPose(cc.point, n, f, alpha, opt.inclinationAxis, cutter,
+                                                 opt.ccAxialPosition);
           if (!vertexFree(pose, verts)) continue;
           r.verdict = o == 1 ? PostureClass::Reversed
                              : (k == 0 ? PostureClass::FreeInitial : PostureClass::Inclined);
@@ -224,7 +237,8 @@ StrategyResult runPeripheralStrategy(const MeshIndex& index, const Cutter& cutte
     throw InputError("tool.type", "peripheral milling (seed 004) needs a flat (cylinder) cutter");
   if (!(options.inclinationStepDeg > 0) || !(options.inclinationMaxDeg >= 0) ||
       options.inclinationMaxDeg > 90)
-    throw InputError("--inclination-step/--inclination-max", "need step > 0 and 0 <= max <= 90 deg");
+    throw InputError("--inclination-step/--inclination-max",
+                     "need step > 0 and 0 <= max <= 90 deg");
   if (!(options.ccAxialPosition >= 0 && options.ccAxialPosition <= 1))
     throw InputError("--cc-position", "must be in [0, 1] (a fraction of the flute length)");
   if (options.feedAxis != 'x' && options.feedAxis != 'y')
@@ -237,7 +251,8 @@ StrategyResult runPeripheralStrategy(const MeshIndex& index, const Cutter& cutte
   const Search search{index, cutter, options,
                       options.vertexTestLength > 0 ? options.vertexTestLength : cutter.fluteLength};
   result.postures.resize(ccs.size());
-  tbb::parallel_for(size_t(0), ccs.size(), [&](size_t i) { result.postures[i] = search.run(ccs[i]); });
+  tbb::parallel_for(size_t(0), ccs.size(),
+                    [&](size_t i) { result.postures[i] = search.run(ccs[i]); });
 
   StrategySummary& s = result.summary;
   s.ccPoints = ccs.size();
@@ -249,19 +264,30 @@ StrategyResult runPeripheralStrategy(const MeshIndex& index, const Cutter& cutte
     s.initialVertexInterference += !p.initialVertexFree;
     s.initialExactGouging += p.initialExactDepth > options.gougeTolerance;
     switch (p.verdict) {
-      case PostureClass::FreeInitial: ++s.freeInitial; break;
-      case PostureClass::Inclined: ++s.inclined; break;
-      case PostureClass::Reversed: ++s.reversed; break;
-      case PostureClass::NonMachinable: ++s.nonMachinable; break;
+      case PostureClass::FreeInitial:
+        ++s.freeInitial;
+        break;
+      case PostureClass::Inclined:
+        ++s.inclined;
+        break;
+      case PostureClass::Reversed:
+        ++s.reversed;
+        break;
+      case PostureClass::NonMachinable:
+        ++s.nonMachinable;
+        break;
     }
     const int key = groupKey(p);
     const bool newGroup = i == 0 || result.postures[i - 1].cc.plane != p.cc.plane ||
                           result.postures[i - 1].cc.line != p.cc.line ||
                           groupKey(result.postures[i - 1]) != key;
     if (newGroup) {
-      if (key == 0) ++s.groupsNonMachinable;
-      else if (key > 0) ++s.groupsForward;
-      else ++s.groupsBackward;
+      if (key == 0)
+        ++s.groupsNonMachinable;
+      else if (key > 0)
+        ++s.groupsForward;
+      else
+        ++s.groupsBackward;
     }
     if (key == 0) continue;
     ++s.checkedPostures;
@@ -278,7 +304,8 @@ StrategyResult runPeripheralStrategy(const MeshIndex& index, const Cutter& cutte
       moves.push_back({p.pose, p.pose, false});
     } else {
       const Pose from = moves.back().to;
-      if (moves.back().from.tip == from.tip && moves.back().from.axis == from.axis && !moves.back().rapid)
+      if (moves.back().from.tip == from.tip && moves.back().from.axis == from.axis &&
+          !moves.back().rapid)
         moves.back().to = p.pose;  // replace the group's zero-length opening move
       else
         moves.push_back({from, p.pose, false});

@@ -50,17 +50,17 @@ const char* toString(PostureClass c);
 const char* toString(InclinationAxis a);
 
 struct StrategyOptions {
-  double sliceSpacing = 0;         // mm between slicing planes; <= 0: the flute length L
-  char feedAxis = 'x';             // 'x': planes y = const, feed along +x; 'y': the converse
-  double ccStep = 0;               // mm; > 0: pieces longer than this give several cc-points
-  double ccAxialPosition = 0;      // where the cc-point sits along the flute, fraction of L
-  double inclinationStepDeg = 0.5; // §2.3
-  double inclinationMaxDeg = 10;   // §2.3
+  double sliceSpacing = 0;          // mm between slicing planes; <= 0: the flute length L
+  char feedAxis = 'x';              // 'x': planes y = const, feed along +x; 'y': the converse
+  double ccStep = 0;                // mm; > 0: pieces longer than this give several cc-points
+  double ccAxialPosition = 0;       // where the cc-point sits along the flute, fraction of L
+  double inclinationStepDeg = 0.5;  // §2.3
+  double inclinationMaxDeg = 10;    // §2.3
   InclinationAxis inclinationAxis = InclinationAxis::Normal;
-  bool inclineBothWays = false;    // also try -alpha at each step (after +alpha)
-  double vertexTestLength = 0;     // mm along the axis for the vertex test; <= 0: L
-  double vertexTolerance = 1e-9;   // mm: "inside" means closer to the axis than R - this
-  double gougeTolerance = 1e-6;    // mm: an exact depth above this is a gouge
+  bool inclineBothWays = false;   // also try -alpha at each step (after +alpha)
+  double vertexTestLength = 0;    // mm along the axis for the vertex test; <= 0: L
+  double vertexTolerance = 1e-9;  // mm: "inside" means closer to the axis than R - this
+  double gougeTolerance = 1e-6;   // mm: an exact depth above this is a gouge
 };
 
 struct CcPoint {
@@ -75,16 +75,16 @@ struct CcPoint {
 struct PostureResult {
   CcPoint cc;
   PostureClass verdict = PostureClass::NonMachinable;
-  bool kNegative = false;      // F x N pointed down: the primary orientation is -(F x N)
-  bool reversed = false;       // the posture uses the alternative (reverse) orientation
-  double inclinationDeg = 0;   // alpha used (signed when inclineBothWays)
-  Vec3 feedUsed;               // the group's feed: axis before inclination = feedUsed x N
-  Pose pose;                   // the posture used; non-machinable: the initial posture
-  bool vertexFree = false;     // the vertex test's verdict on `pose`
-  double exactDepth = 0;       // mm, exact penetration of `pose` (gouge_check.h)
+  bool kNegative = false;     // F x N pointed down: the primary orientation is -(F x N)
+  bool reversed = false;      // the posture uses the alternative (reverse) orientation
+  double inclinationDeg = 0;  // alpha used (signed when inclineBothWays)
+  Vec3 feedUsed;              // the group's feed: axis before inclination = feedUsed x N
+  Pose pose;                  // the posture used; non-machinable: the initial posture
+  bool vertexFree = false;    // the vertex test's verdict on `pose`
+  double exactDepth = 0;      // mm, exact penetration of `pose` (gouge_check.h)
   int64_t deepestTriangle = -1;
-  double initialExactDepth = 0;   // mm, exact penetration of the initial posture
-  bool initialVertexFree = false; // the vertex test's verdict on the initial posture
+  double initialExactDepth = 0;    // mm, exact penetration of the initial posture
+  bool initialVertexFree = false;  // the vertex test's verdict on the initial posture
 };
 
 struct StrategySummary {
@@ -96,8 +96,8 @@ struct StrategySummary {
   size_t groupsForward = 0, groupsBackward = 0, groupsNonMachinable = 0;
   // Exact check of the accepted postures.
   size_t checkedPostures = 0;
-  size_t gougingPostures = 0;       // exact depth > gougeTolerance
-  size_t missedByVertexTest = 0;    // accepted by the vertex test and gouging
+  size_t gougingPostures = 0;          // exact depth > gougeTolerance
+  size_t missedByVertexTest = 0;       // accepted by the vertex test and gouging
   double maxDepth = 0, meanDepth = 0;  // mm, over the gouging postures
   // The initial posture of every cc-point, both tests.
   size_t initialVertexInterference = 0, initialExactGouging = 0;
@@ -106,8 +106,8 @@ struct StrategySummary {
 };
 
 struct StrategyResult {
-  std::vector<double> planes;            // slicing plane coordinates, mm
-  std::vector<PostureResult> postures;   // ordered by plane, line, feed coordinate
+  std::vector<double> planes;           // slicing plane coordinates, mm
+  std::vector<PostureResult> postures;  // ordered by plane, line, feed coordinate
   StrategySummary summary;
   // The accepted postures as a peripheral tool path: consecutive postures of a group
   // joined by linear moves (a one-posture group is a zero-length move), rapids between.

@@ -29,8 +29,8 @@ constexpr double kFlankGapMm = 1e-5;
 
 void requireAngle(double deg, const char* field) {
   if (!std::isfinite(deg) || std::fabs(deg) >= 90)
-    throw InputError(field, "must be an angle in degrees with |angle| < 90, got " +
-                                std::to_string(deg));
+    throw InputError(field,
+                     "must be an angle in degrees with |angle| < 90, got " + std::to_string(deg));
 }
 
 // Golden-section search for the largest value of a unimodal f on [a, b]; returns the
@@ -82,8 +82,8 @@ SimulatedPass::SimulatedPass(const Cutter& cutter, double leadDeg, double tiltDe
   reachMinus_ = centreY_ - (tip_.y + cutterSupport(cutter, axis_, Vec3{0, -1, 0}).y);
   // The cutter meets the plane x = 0 for tip x in [-max x, -min x] of the cutter; a
   // pass longer than that on both sides leaves the full shadow at x = 0.
-  const double xExtent = std::max(cutterSupport(cutter, axis_, feed).x,
-                                  -cutterSupport(cutter, axis_, -feed).x);
+  const double xExtent =
+      std::max(cutterSupport(cutter, axis_, feed).x, -cutterSupport(cutter, axis_, -feed).x);
   halfLength_ = xExtent + 1.0;
   std::vector<SweptSegment> segments;
   segments.emplace_back(cutter, tip_ - feed * halfLength_, tip_ + feed * halfLength_, axis_);
@@ -94,12 +94,12 @@ SimulatedPass::SimulatedPass(const Cutter& cutter, double leadDeg, double tiltDe
   // The floor contact: the lowest z-map sample, refined by golden section (convex).
   const double s = bracketSpacing();
   const ScallopProfile coarse = profile(-reachMinus_ - 2 * s, reachPlus_ + 2 * s, s);
-  const size_t k = size_t(std::min_element(coarse.height.begin(), coarse.height.end()) -
-                          coarse.height.begin());
+  const size_t k =
+      size_t(std::min_element(coarse.height.begin(), coarse.height.end()) - coarse.height.begin());
   const double a = coarse.position[k == 0 ? 0 : k - 1];
   const double b = coarse.position[std::min(k + 1, coarse.position.size() - 1)];
-  floorY_ = goldenMax([this](double y) { return -heightAboveFloor(y); }, a, b,
-                      options_.toleranceMm);
+  floorY_ =
+      goldenMax([this](double y) { return -heightAboveFloor(y); }, a, b, options_.toleranceMm);
 }
 
 SimulatedPass::~SimulatedPass() = default;

@@ -43,8 +43,8 @@ struct SideIntervals {
   std::string reason;      // why not reachable; empty otherwise
   // Signed distances from the centre line (positive outwards; a tilt can put a root
   // on the other side of the centre line, then it is negative).
-  double plusMm = 0;       // +c side: where the height reaches h, y = +plus
-  double minusMm = 0;      // -c side: y = -minus
+  double plusMm = 0;   // +c side: where the height reaches h, y = +plus
+  double minusMm = 0;  // -c side: y = -minus
   // Half the step-over at which two passes leave a cusp of exactly h: the +c side of
   // one pass meets the -c side of the next, so the step-over is plus + minus.
   double halfIntervalMm() const { return 0.5 * (plusMm + minusMm); }
@@ -52,9 +52,9 @@ struct SideIntervals {
 
 // The cusp left between two passes `stepOverMm` apart (the second on the +c side).
 struct SimulatedCusp {
-  bool covered = false;  // false: the passes do not overlap, a strip stays uncut
-  double heightMm = 0;   // highest point between the passes above the floor
-  double positionMm = 0; // its cross-feed distance from the first pass's centre line
+  bool covered = false;   // false: the passes do not overlap, a strip stays uncut
+  double heightMm = 0;    // highest point between the passes above the floor
+  double positionMm = 0;  // its cross-feed distance from the first pass's centre line
 };
 
 class SimulatedPass {

@@ -13,12 +13,18 @@ constexpr double kPi = 3.14159265358979323846;
 
 const char* toString(SurfaceShape shape) {
   switch (shape) {
-    case SurfaceShape::Plane: return "plane";
-    case SurfaceShape::Dome: return "dome";
-    case SurfaceShape::Bowl: return "bowl";
-    case SurfaceShape::Saddle: return "saddle";
-    case SurfaceShape::Wave: return "wave";
-    case SurfaceShape::Trough: return "trough";
+    case SurfaceShape::Plane:
+      return "plane";
+    case SurfaceShape::Dome:
+      return "dome";
+    case SurfaceShape::Bowl:
+      return "bowl";
+    case SurfaceShape::Saddle:
+      return "saddle";
+    case SurfaceShape::Wave:
+      return "wave";
+    case SurfaceShape::Trough:
+      return "trough";
   }
   return "?";
 }
@@ -27,21 +33,31 @@ SurfaceShape parseSurfaceShape(const std::string& name, const std::string& field
   for (SurfaceShape s : {SurfaceShape::Plane, SurfaceShape::Dome, SurfaceShape::Bowl,
                          SurfaceShape::Saddle, SurfaceShape::Wave, SurfaceShape::Trough})
     if (name == toString(s)) return s;
-  throw InputError(field, "unknown shape '" + name + "', expected dome, bowl, saddle, wave, plane or trough");
+  throw InputError(
+      field, "unknown shape '" + name + "', expected dome, bowl, saddle, wave, plane or trough");
 }
 
-double SurfaceSpec::heightOrDefault() const { return height > 0 ? height : 0.2 * std::min(sizeX, sizeY); }
-double SurfaceSpec::troughRadiusOrDefault() const { return troughRadius > 0 ? troughRadius : sizeX / 8; }
+double SurfaceSpec::heightOrDefault() const {
+  return height > 0 ? height : 0.2 * std::min(sizeX, sizeY);
+}
+double SurfaceSpec::troughRadiusOrDefault() const {
+  return troughRadius > 0 ? troughRadius : sizeX / 8;
+}
 
 double surfaceHeight(const SurfaceSpec& spec, double x, double y) {
   const double h = spec.heightOrDefault();
   const double u = 2 * x / spec.sizeX - 1, v = 2 * y / spec.sizeY - 1;
   switch (spec.shape) {
-    case SurfaceShape::Plane: return 0;
-    case SurfaceShape::Dome: return h * (1 - 0.5 * (u * u + v * v));
-    case SurfaceShape::Bowl: return h * 0.5 * (u * u + v * v);
-    case SurfaceShape::Saddle: return h * 0.5 * (1 + u * u - v * v);
-    case SurfaceShape::Wave: return h * 0.5 * (1 + std::sin(1.5 * kPi * u) * std::cos(kPi * v));
+    case SurfaceShape::Plane:
+      return 0;
+    case SurfaceShape::Dome:
+      return h * (1 - 0.5 * (u * u + v * v));
+    case SurfaceShape::Bowl:
+      return h * 0.5 * (u * u + v * v);
+    case SurfaceShape::Saddle:
+      return h * 0.5 * (1 + u * u - v * v);
+    case SurfaceShape::Wave:
+      return h * 0.5 * (1 + std::sin(1.5 * kPi * u) * std::cos(kPi * v));
     case SurfaceShape::Trough: {
       const double r = spec.troughRadiusOrDefault(), d = std::min(h, r);
       const double w = std::sqrt(r * r - (r - d) * (r - d));
@@ -53,7 +69,8 @@ double surfaceHeight(const SurfaceSpec& spec, double x, double y) {
 }
 
 TriangleMesh makeTestSurface(const SurfaceSpec& spec) {
-  if (!(spec.sizeX > 0) || !(spec.sizeY > 0) || !std::isfinite(spec.sizeX) || !std::isfinite(spec.sizeY))
+  if (!(spec.sizeX > 0) || !(spec.sizeY > 0) || !std::isfinite(spec.sizeX) ||
+      !std::isfinite(spec.sizeY))
     throw InputError("--size", "both sizes must be positive finite lengths in mm");
   if (spec.facets < 2 || spec.facets > 50000000)
     throw InputError("--facets", "must be between 2 and 50000000");

@@ -43,8 +43,7 @@ PositionKey keyOf(const Vec3& p) {
 
 }  // namespace
 
-TriangleMesh meshFromTriangles(const std::vector<std::array<Vec3, 3>>& soup,
-                               MeshRepairs* repairs) {
+TriangleMesh meshFromTriangles(const std::vector<std::array<Vec3, 3>>& soup, MeshRepairs* repairs) {
   TriangleMesh mesh;
   MeshRepairs local;
   MeshRepairs& rep = repairs ? *repairs : local;
@@ -108,7 +107,8 @@ bool collect(RTCPointQueryFunctionArguments* args) {
 
 MeshIndex::MeshIndex(const TriangleMesh& mesh) : mesh_(mesh), impl_(std::make_unique<Impl>()) {
   if (mesh.triangles.empty()) throw std::runtime_error("MeshIndex: the mesh has no triangles");
-  if (mesh.triangles.size() > UINT32_MAX / 2) throw std::runtime_error("MeshIndex: too many triangles");
+  if (mesh.triangles.size() > UINT32_MAX / 2)
+    throw std::runtime_error("MeshIndex: too many triangles");
   const Box3 box = mesh.bounds();
   const double reach = std::max({std::fabs(box.min.x), std::fabs(box.min.y), std::fabs(box.min.z),
                                  std::fabs(box.max.x), std::fabs(box.max.y), std::fabs(box.max.z)});
@@ -126,13 +126,13 @@ MeshIndex::MeshIndex(const TriangleMesh& mesh) : mesh_(mesh), impl_(std::make_un
   rtcSetSceneFlags(im.scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(im.scene, RTC_BUILD_QUALITY_HIGH);
   RTCGeometry geom = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                        RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                        mesh.vertices.size()));
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
   auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
                                                            RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
                                                            mesh.triangles.size()));
-  if (!v || !f) throw std::runtime_error(im.lastError.empty() ? "Embree: out of memory" : im.lastError);
+  if (!v || !f)
+    throw std::runtime_error(im.lastError.empty() ? "Embree: out of memory" : im.lastError);
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
     v[3 * i] = float(mesh.vertices[i].x);
     v[3 * i + 1] = float(mesh.vertices[i].y);

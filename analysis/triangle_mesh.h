@@ -20,9 +20,9 @@
 namespace scallop {
 
 struct TriangleMesh {
-  std::vector<Vec3> vertices;                     // welded: each position once, mm
-  std::vector<std::array<uint32_t, 3>> triangles; // counter-clockwise about `normals`
-  std::vector<Vec3> normals;                      // unit facet normals, one per triangle
+  std::vector<Vec3> vertices;                      // welded: each position once, mm
+  std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise about `normals`
+  std::vector<Vec3> normals;                       // unit facet normals, one per triangle
 
   Box3 bounds() const;
   std::array<Vec3, 3> corners(size_t t) const {
@@ -34,9 +34,9 @@ struct TriangleMesh {
 // What building a mesh from a triangle soup changed (documented repairs).
 struct MeshRepairs {
   size_t inputTriangles = 0;
-  size_t degenerateDropped = 0;           // zero area (after welding), not used
-  std::vector<size_t> firstDegenerate;    // 1-based input numbers, at most 10
-  size_t flippedUp = 0;                   // facets turned over by orientNormalsUp
+  size_t degenerateDropped = 0;         // zero area (after welding), not used
+  std::vector<size_t> firstDegenerate;  // 1-based input numbers, at most 10
+  size_t flippedUp = 0;                 // facets turned over by orientNormalsUp
 };
 
 // Welds exactly equal positions (STL stores each vertex once per facet) and computes

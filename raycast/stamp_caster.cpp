@@ -83,7 +83,8 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
       s.lowest = s.tip.z + lowest;
       s.x0 = s.tip.x + bx0, s.x1 = s.tip.x + bx1, s.y0 = s.tip.y + by0, s.y1 = s.tip.y + by1;
       s.segment = uint32_t(k);
-      if (s.lowest >= ceiling || s.x1 < g.originX || s.x0 > mapX1 || s.y1 < g.originY || s.y0 > mapY1)
+      if (s.lowest >= ceiling || s.x1 < g.originX || s.x0 > mapX1 || s.y1 < g.originY ||
+          s.y0 > mapY1)
         continue;
       stamps.push_back(s);
     }
@@ -126,11 +127,15 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
           for (int64_t tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
             const int64_t i0 = tx * tile, i1 = std::min(g.nx, i0 + tile);
             const int64_t j0 = ty * tile, j1 = std::min(g.ny, j0 + tile);
-            const double x0 = g.originX + double(i0) * g.spacing, x1 = g.originX + double(i1) * g.spacing;
-            const double y0 = g.originY + double(j0) * g.spacing, y1 = g.originY + double(j1) * g.spacing;
+            const double x0 = g.originX + double(i0) * g.spacing,
+                         x1 = g.originX + double(i1) * g.spacing;
+            const double y0 = g.originY + double(j0) * g.spacing,
+                         y1 = g.originY + double(j1) * g.spacing;
             mine.clear();
-            for (int64_t by = bucketOf(y0, g.originY, nby); by <= bucketOf(y1, g.originY, nby); ++by)
-              for (int64_t bx = bucketOf(x0, g.originX, nbx); bx <= bucketOf(x1, g.originX, nbx); ++bx) {
+            for (int64_t by = bucketOf(y0, g.originY, nby); by <= bucketOf(y1, g.originY, nby);
+                 ++by)
+              for (int64_t bx = bucketOf(x0, g.originX, nbx); bx <= bucketOf(x1, g.originX, nbx);
+                   ++bx) {
                 const std::vector<uint32_t>& b = buckets[size_t(by * nbx + bx)];
                 mine.insert(mine.end(), b.begin(), b.end());
               }
@@ -175,9 +180,9 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
   return stats;
 }
 
-StampSimulationResult simulateStamped(const Cutter& cutter, const ToolPath& path,
-                                      const Box3& stock, const GridSpec& grid,
-                                      const SweepOptions& sweep, const StampOptions& options) {
+StampSimulationResult simulateStamped(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                                      const GridSpec& grid, const SweepOptions& sweep,
+                                      const StampOptions& options) {
   const std::vector<SweptSegment> segments = sweepToolPath(cutter, path, sweep);
   StampSimulationResult result;
   result.segments = segments.size();

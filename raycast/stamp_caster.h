@@ -44,9 +44,9 @@ struct StampOptions {
 
 struct StampStats {
   int64_t cells = 0;
-  uint64_t positions = 0;        // stamps that can reach below the initial map
-  uint64_t exactEvaluations = 0; // cutterLowestPoint calls
-  double minStep = 0;            // smallest step used, mm
+  uint64_t positions = 0;         // stamps that can reach below the initial map
+  uint64_t exactEvaluations = 0;  // cutterLowestPoint calls
+  double minStep = 0;             // smallest step used, mm
   double seconds = 0;
   double evaluationsPerCell() const { return cells ? double(exactEvaluations) / cells : 0; }
 };
@@ -66,9 +66,8 @@ struct StampSimulationResult {
 
 // The stamping counterpart of simulate(): the same sweep into segments (so moves with
 // a turning axis are split the same way), then stampZMap instead of the exact scene.
-StampSimulationResult simulateStamped(const Cutter& cutter, const ToolPath& path,
-                                      const Box3& stock, const GridSpec& grid,
-                                      const SweepOptions& sweep = {},
+StampSimulationResult simulateStamped(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                                      const GridSpec& grid, const SweepOptions& sweep = {},
                                       const StampOptions& options = {});
 
 }  // namespace scallop

@@ -38,17 +38,23 @@ struct TileBox {
 
 // Slack that absorbs float rounding of a coordinate of magnitude |v| (mm): a few float
 // ulps plus a nanometre. Culling must stay conservative after conversion to float.
-float slack(double v) { return float(8.0 * std::fabs(v) * 0x1p-23 + 1e-6); }
-float roundDown(double v) { return std::nextafter(float(v), -HUGE_VALF) - slack(v); }
-float roundUp(double v) { return std::nextafter(float(v), HUGE_VALF) + slack(v); }
+float slack(double v) {
+  return float(8.0 * std::fabs(v) * 0x1p-23 + 1e-6);
+}
+float roundDown(double v) {
+  return std::nextafter(float(v), -HUGE_VALF) - slack(v);
+}
+float roundUp(double v) {
+  return std::nextafter(float(v), HUGE_VALF) + slack(v);
+}
 
 // The ray's context carries the exact (double) cell centre and the best height so far;
 // Embree hands it back to the intersect callback (the first member must be Embree's).
 struct CellContext {
   RTCIntersectContext embree;
-  double x, y;       // exact cell centre, mm
-  double originZ;    // the ray starts here, below every box
-  double best;       // lowest exact height found so far, mm
+  double x, y;     // exact cell centre, mm
+  double originZ;  // the ray starts here, below every box
+  double best;     // lowest exact height found so far, mm
   uint64_t evaluations;
   SweptScene::QueryCache* cache;  // may be null
   uint32_t winner;                // segment of `best`, or UINT32_MAX
@@ -76,7 +82,9 @@ double planeBoundOver(const TileBox& t, double x0, double y0, double x1, double 
   return bound;
 }
 // Plane values are exact up to double round-off; this margin (mm) absorbs it.
-double planeSlack(double v) { return 1e-9 * (1 + std::fabs(v)); }
+double planeSlack(double v) {
+  return 1e-9 * (1 + std::fabs(v));
+}
 
 }  // namespace
 
@@ -205,14 +213,16 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
           const TilePlane plane{h / N.z, -N.x / N.z, -N.y / N.z};
           t.plane[t.planes++] = plane;
           double planeMin = HUGE_VAL;
-          for (int c = 0; c < 4; ++c) planeMin = std::min(planeMin, plane.a + plane.b * cx[c] + plane.c * cy[c]);
+          for (int c = 0; c < 4; ++c)
+            planeMin = std::min(planeMin, plane.a + plane.b * cx[c] + plane.c * cy[c]);
           lower = std::max(lower, planeMin);
         }
         if (lower >= stockTop) continue;  // the whole tile stays above the stock
         // Grown by the query region's half size, so that one ray at a region's centre
         // meets every tile that overlaps the region (gatherCandidates).
         const double g = options.regionHalfSize;
-        t.lower[0] = roundDown(x0 - g), t.lower[1] = roundDown(y0 - g), t.lower[2] = roundDown(lower);
+        t.lower[0] = roundDown(x0 - g), t.lower[1] = roundDown(y0 - g),
+        t.lower[2] = roundDown(lower);
         t.upper[0] = roundUp(x1 + g), t.upper[1] = roundUp(y1 + g);
         t.upper[2] = std::max(t.lower[2], roundUp(std::min(box.max.z, stockTop)));
         t.segment = uint32_t(k);
@@ -270,8 +280,12 @@ SweptScene::~SweptScene() {
   if (impl_->device) rtcReleaseDevice(impl_->device);
 }
 
-const std::vector<SweptSegment>& SweptScene::segments() const { return impl_->segments; }
-const SceneStats& SweptScene::stats() const { return impl_->stats; }
+const std::vector<SweptSegment>& SweptScene::segments() const {
+  return impl_->segments;
+}
+const SceneStats& SweptScene::stats() const {
+  return impl_->stats;
+}
 
 namespace {
 
@@ -374,8 +388,8 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates, d
   order.clear();
   for (uint32_t k = 0; k < candidates.size(); ++k) {
     const Candidate& cand = candidates[k];
-    const double bound = std::max(planeBoundAt(impl_->tiles[cand.tile], x, y),
-                                  cand.a + cand.b * x + cand.c * y);
+    const double bound =
+        std::max(planeBoundAt(impl_->tiles[cand.tile], x, y), cand.a + cand.b * x + cand.c * y);
     const double safe = bound - planeSlack(bound);
     if (safe < ceiling) order.emplace_back(safe, k);
   }

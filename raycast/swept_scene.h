@@ -20,8 +20,8 @@
 namespace scallop {
 
 struct SceneOptions {
-  double tileSize = 0;   // xy tile side, mm; <= 0 picks cutter radius / 8
-  double stockTop = 0;   // heights above this never matter (the ray stops there), mm
+  double tileSize = 0;  // xy tile side, mm; <= 0 picks cutter radius / 8
+  double stockTop = 0;  // heights above this never matter (the ray stops there), mm
   // Largest half side of a square region that gatherCandidates() will be asked about,
   // mm. Tile boxes grow by this much in x and y.
   double regionHalfSize = 0;
@@ -29,8 +29,8 @@ struct SceneOptions {
 
 struct SceneStats {
   size_t segments = 0;
-  size_t tiles = 0;            // Embree primitives
-  size_t boundEvaluations = 0; // exact evaluations spent on building the bounds
+  size_t tiles = 0;             // Embree primitives
+  size_t boundEvaluations = 0;  // exact evaluations spent on building the bounds
   double buildSeconds = 0;
 };
 

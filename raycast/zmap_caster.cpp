@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
-#include <utility>
 #include <chrono>
+#include <cmath>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 namespace scallop {
@@ -25,8 +25,8 @@ namespace {
 //  3. one gathering ray collects those (each also gets the supporting plane of its
 //     solid below the centre), and each cell takes the exact minimum among them
 //     (lowestHeightAmong), which equals lowestHeight() cell by cell.
-void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int64_t j0,
-                int64_t j1, std::vector<SweptScene::Candidate>& candidates, SweptScene::QueryCache& cache,
+void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int64_t j0, int64_t j1,
+                std::vector<SweptScene::Candidate>& candidates, SweptScene::QueryCache& cache,
                 uint64_t& evals) {
   const GridSpec& g = map.grid();
   const double x0 = g.cellCentreX(i0), x1 = g.cellCentreX(i1 - 1);
@@ -85,7 +85,8 @@ CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& option
           for (int64_t tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
             uint64_t evals = 0;
             SweptScene::QueryCache cache;
-            const int64_t j1 = std::min(g.ny, (ty + 1) * tile), i1 = std::min(g.nx, (tx + 1) * tile);
+            const int64_t j1 = std::min(g.ny, (ty + 1) * tile),
+                          i1 = std::min(g.nx, (tx + 1) * tile);
             for (int64_t rj = ty * tile; rj < j1; rj += region) {
               for (int64_t ri = tx * tile; ri < i1; ri += region) {
                 const int64_t ri1 = std::min(i1, ri + region), rj1 = std::min(j1, rj + region);

@@ -9,9 +9,12 @@ namespace scallop {
 
 const char* toString(CutterType type) {
   switch (type) {
-    case CutterType::Ball: return "ball";
-    case CutterType::Flat: return "flat";
-    case CutterType::Bull: return "bull";
+    case CutterType::Ball:
+      return "ball";
+    case CutterType::Flat:
+      return "flat";
+    case CutterType::Bull:
+      return "bull";
   }
   return "?";
 }
@@ -26,7 +29,8 @@ CutterType parseCutterType(const std::string& name, const std::string& field) {
 namespace {
 
 void requireFinite(double v, const std::string& field) {
-  if (!std::isfinite(v)) throw InputError(field, "must be a finite number of mm, got " + std::to_string(v));
+  if (!std::isfinite(v))
+    throw InputError(field, "must be a finite number of mm, got " + std::to_string(v));
 }
 
 }  // namespace
@@ -43,8 +47,12 @@ Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double 
   c.type = type;
   c.radius = radius;
   switch (type) {
-    case CutterType::Ball: c.cornerRadius = radius; break;
-    case CutterType::Flat: c.cornerRadius = 0; break;
+    case CutterType::Ball:
+      c.cornerRadius = radius;
+      break;
+    case CutterType::Flat:
+      c.cornerRadius = 0;
+      break;
     case CutterType::Bull:
       requireFinite(cornerRadius, crField);
       if (cornerRadius <= 0 || cornerRadius >= radius)

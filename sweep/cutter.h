@@ -19,9 +19,9 @@ CutterType parseCutterType(const std::string& name, const std::string& field = "
 
 struct Cutter {
   CutterType type = CutterType::Ball;
-  double radius = 0;         // R, mm
-  double cornerRadius = 0;   // r, mm (R for ball, 0 for flat)
-  double fluteLength = 0;    // L, mm: height of the cylindrical part's top above the tip
+  double radius = 0;        // R, mm
+  double cornerRadius = 0;  // r, mm (R for ball, 0 for flat)
+  double fluteLength = 0;   // L, mm: height of the cylindrical part's top above the tip
 
   // Validates and builds a cutter. `cornerRadius` is only read for bull cutters;
   // `fluteLength` <= 0 means the default 4 R. Throws InputError naming

@@ -15,8 +15,8 @@ constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 
 void requireAngle(double deg, const std::string& field) {
   if (!std::isfinite(deg) || std::fabs(deg) >= 90)
-    throw InputError(field, "must be an angle in degrees with |angle| < 90, got " +
-                                std::to_string(deg));
+    throw InputError(field,
+                     "must be an angle in degrees with |angle| < 90, got " + std::to_string(deg));
 }
 
 }  // namespace
@@ -53,7 +53,8 @@ ToolPath makeRaster(const Cutter& cutter, const Box3& stock, const RasterSpec& s
   ToolPath path;
   for (int k = 0; k < int(passes); ++k) {
     const bool reversed = spec.zigzag && (k % 2 == 1);
-    const Vec3 feed = alongX ? Vec3{reversed ? -1.0 : 1.0, 0, 0} : Vec3{0, reversed ? -1.0 : 1.0, 0};
+    const Vec3 feed =
+        alongX ? Vec3{reversed ? -1.0 : 1.0, 0, 0} : Vec3{0, reversed ? -1.0 : 1.0, 0};
     const Vec3 axis = leadTiltAxis(feed, spec.leadDeg, spec.tiltDeg);
     // depth is measured to the lowest point of the tilted cutter, not to the tip.
     const double tipZ = floorZ - cutterSupport(cutter, axis, Vec3{0, 0, -1}).z;
@@ -68,8 +69,9 @@ ToolPath makeRaster(const Cutter& cutter, const Box3& stock, const RasterSpec& s
       rapid.rapid = true;
       path.moves.push_back(rapid);
     }
-    const int pieces =
-        spec.segmentLength > 0 ? std::max(1, int(std::ceil((feedMax - feedMin) / spec.segmentLength))) : 1;
+    const int pieces = spec.segmentLength > 0
+                           ? std::max(1, int(std::ceil((feedMax - feedMin) / spec.segmentLength)))
+                           : 1;
     for (int i = 0; i < pieces; ++i) {
       Move mv;
       mv.from = {at(a + (b - a) * double(i) / pieces), axis};

@@ -9,12 +9,12 @@
 namespace scallop {
 
 struct RasterSpec {
-  char direction = 'x';    // feed along 'x' or 'y'
-  double stepOver = 1.0;   // L, mm between passes
-  double depth = 0.5;      // mm from the stock top to the cutter's lowest point
-  double leadDeg = 0;      // rho: axis rotated from +Z towards +f
-  double tiltDeg = 0;      // tau: axis rotated from +Z towards +c = z x f
-  bool zigzag = false;     // alternate the feed direction between passes
+  char direction = 'x';      // feed along 'x' or 'y'
+  double stepOver = 1.0;     // L, mm between passes
+  double depth = 0.5;        // mm from the stock top to the cutter's lowest point
+  double leadDeg = 0;        // rho: axis rotated from +Z towards +f
+  double tiltDeg = 0;        // tau: axis rotated from +Z towards +c = z x f
+  bool zigzag = false;       // alternate the feed direction between passes
   double segmentLength = 0;  // > 0: cut each pass into moves of at most this length, mm
 };
 

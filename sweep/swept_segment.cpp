@@ -258,8 +258,7 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
   return lowestPoint(x, y, nullptr);
 }
 
-LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo,
-                                      double cutoff) const {
+LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
   const double qx = x - start_.x, qy = y - start_.y;
 
   // A plunge, a retract or a zero-length move: the cutter slides along l itself.

@@ -50,8 +50,7 @@ class SweptSegment {
   // The same, reusing `memo` (which it updates) when the section plane is the same.
   // A point at or above `cutoff` may be reported as a miss: callers that only want
   // heights below their current best pass it and skip work that cannot matter.
-  LowestPoint lowestPoint(double x, double y, SectionMemo* memo,
-                          double cutoff = HUGE_VAL) const;
+  LowestPoint lowestPoint(double x, double y, SectionMemo* memo, double cutoff = HUGE_VAL) const;
 
   // Tight axis-aligned bounds of the swept solid.
   Box3 bounds() const;

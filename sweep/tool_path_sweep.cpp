@@ -36,8 +36,8 @@ std::vector<SweptSegment> sweepToolPath(const Cutter& cutter, const ToolPath& pa
     if (!out.empty() && continues(out.back(), p0, p1, axis)) {
       const Vec3 start = out.back().start();
       // Keep a zero-length predecessor's position out of the merged move.
-      out.back() = SweptSegment(cutter, length(out.back().end() - start) == 0 ? p0 : start, p1,
-                                axis);
+      out.back() =
+          SweptSegment(cutter, length(out.back().end() - start) == 0 ? p0 : start, p1, axis);
       return;
     }
     out.emplace_back(cutter, p0, p1, axis);

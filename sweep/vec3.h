@@ -17,19 +17,37 @@ struct Vec3 {
   constexpr Vec3 operator-() const { return {-x, -y, -z}; }
   constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
   constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
-  Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
-  Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
+  Vec3& operator+=(const Vec3& o) {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  Vec3& operator-=(const Vec3& o) {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
   constexpr bool operator==(const Vec3& o) const { return x == o.x && y == o.y && z == o.z; }
   constexpr bool operator!=(const Vec3& o) const { return !(*this == o); }
 };
 
-inline constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
-inline constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline constexpr Vec3 operator*(double s, const Vec3& v) {
+  return v * s;
+}
+inline constexpr double dot(const Vec3& a, const Vec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
-inline Vec3 normalize(const Vec3& v) { return v / length(v); }
+inline double length(const Vec3& v) {
+  return std::sqrt(dot(v, v));
+}
+inline Vec3 normalize(const Vec3& v) {
+  return v / length(v);
+}
 inline bool isFinite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -43,7 +61,10 @@ struct Box3 {
     min = {std::fmin(min.x, p.x), std::fmin(min.y, p.y), std::fmin(min.z, p.z)};
     max = {std::fmax(max.x, p.x), std::fmax(max.y, p.y), std::fmax(max.z, p.z)};
   }
-  void extend(const Box3& b) { extend(b.min); extend(b.max); }
+  void extend(const Box3& b) {
+    extend(b.min);
+    extend(b.max);
+  }
   bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
 };
 

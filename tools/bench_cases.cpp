@@ -41,8 +41,10 @@ ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGa
   const Vec3 feed{1, 0, 0};
   // Unit normal of z = f(x, y): (-f_x, -f_y, 1) normalised.
   auto normal = [](double x, double y) {
-    const double fx = 0.5 * (2 * kPi / 10) * std::cos(2 * kPi * x / 10) * std::cos(2 * kPi * y / 14);
-    const double fy = -0.5 * (2 * kPi / 14) * std::sin(2 * kPi * x / 10) * std::sin(2 * kPi * y / 14);
+    const double fx =
+        0.5 * (2 * kPi / 10) * std::cos(2 * kPi * x / 10) * std::cos(2 * kPi * y / 14);
+    const double fy =
+        -0.5 * (2 * kPi / 14) * std::sin(2 * kPi * x / 10) * std::sin(2 * kPi * y / 14);
     return normalize(Vec3{-fx, -fy, 1});
   };
   auto leanedAxis = [&](double x, double y) {
@@ -83,7 +85,8 @@ ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGa
 }
 
 BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options) {
-  if (!(options.area >= 0) || !std::isfinite(options.area) || (options.area > 0 && options.area < 0.1))
+  if (!(options.area >= 0) || !std::isfinite(options.area) ||
+      (options.area > 0 && options.area < 0.1))
     throw InputError("--area", "must be a stock side >= 0.1 mm (0: the standard 20 mm)");
   const double side = options.area > 0 ? options.area : kStockSide;
   const double coarse = options.quick ? 10 : 1;
@@ -98,15 +101,17 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
     if (name == "B2") spec.segmentLength = 0.05;
     b.path = makeRaster(b.cutter, b.stock, spec);
     b.grid = gridCovering(0, 0, side, side, 0.001 * coarse);
-    b.description = name == "B1" ? "raster, bull R3 r1, lead 5 deg, step-over 0.8 mm, one move per pass"
-                                 : "B1 with every pass cut into 0.05 mm moves (CAM-like)";
+    b.description = name == "B1"
+                        ? "raster, bull R3 r1, lead 5 deg, step-over 0.8 mm, one move per pass"
+                        : "B1 with every pass cut into 0.05 mm moves (CAM-like)";
   } else if (name == "B3") {
     // The surface spans z in [-0.5, 0.5]; a stock top at 0.6 mm is cut everywhere.
     b.stock.extend({0, 0, -2});
     b.stock.extend({side, side, 0.6});
     b.path = makeFreeformPath(b.cutter, b.stock, 0.5, 0.05, 5);
     b.grid = gridCovering(0, 0, side, side, 0.002 * coarse);
-    b.description = "freeform 5-axis, tip on z = 0.5 sin(2 pi x/10) cos(2 pi y/14), axis = normal leaned 5 deg";
+    b.description =
+        "freeform 5-axis, tip on z = 0.5 sin(2 pi x/10) cos(2 pi y/14), axis = normal leaned 5 deg";
   } else {
     throw InputError("--case", "unknown case \"" + name + "\"; expected B1, B2 or B3");
   }
@@ -114,7 +119,8 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
 }
 
 GridSpec stampWindow(const BenchCase& bench, double side) {
-  const double w = std::min({side, bench.stock.max.x - bench.stock.min.x, bench.stock.max.y - bench.stock.min.y});
+  const double w = std::min(
+      {side, bench.stock.max.x - bench.stock.min.x, bench.stock.max.y - bench.stock.min.y});
   const double cx = 0.5 * (bench.stock.min.x + bench.stock.max.x);
   const double cy = 0.5 * (bench.stock.min.y + bench.stock.max.y);
   return gridCovering(cx - 0.5 * w, cy - 0.5 * w, cx + 0.5 * w, cy + 0.5 * w, bench.grid.spacing);

@@ -1,5 +1,6 @@
 #include "tools/bench_command.h"
 
+#include <fmt/core.h>
 #include <sys/resource.h>
 #include <tbb/task_arena.h>
 
@@ -8,7 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fmt/core.h>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -218,9 +218,10 @@ void printTable(std::FILE* out, const json& doc) {
                "max err mm", "stamp s", "exact s", "ratio");
   for (const auto& [name, s] : doc["stamp"].items())
     std::fprintf(out, "%-4s %7.2fmm %9lld %10.5f %11.2e %10.3f %10.3f %7.1fx\n", name.c_str(),
-                 s["window_mm"].get<double>(), s["cells"].get<long long>(), s["step_mm"].get<double>(),
-                 s["max_error_mm"].get<double>(), s["stamp_seconds"].get<double>(),
-                 s["exact_seconds"].get<double>(), doc["stamp_ratio"][name].get<double>());
+                 s["window_mm"].get<double>(), s["cells"].get<long long>(),
+                 s["step_mm"].get<double>(), s["max_error_mm"].get<double>(),
+                 s["stamp_seconds"].get<double>(), s["exact_seconds"].get<double>(),
+                 doc["stamp_ratio"][name].get<double>());
 }
 
 }  // namespace
@@ -318,8 +319,8 @@ Command addBenchCommand(CLI::App& parent, CommonOptions& common) {
   app->add_option("--stamp-window", args->stampWindow,
                   "Side of the stamping baseline's window, mm (default 0.5, or 1 with --quick)")
       ->check(CLI::PositiveNumber);
-  app->add_flag("--no-stamp", [args](std::int64_t) { args->stamp = false; },
-                "Skip the stamping baseline");
+  app->add_flag(
+      "--no-stamp", [args](std::int64_t) { args->stamp = false; }, "Skip the stamping baseline");
   addThreadsOption(*app, common);
   return {app, [args, &common]() {
             args->threads = common.threads;

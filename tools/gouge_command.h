@@ -10,19 +10,19 @@
 namespace scallop {
 
 struct GougeArgs {
-  std::string surface;           // STL file
-  double radius = 0;             // R, mm
-  double length = 0;             // flute length L, mm
+  std::string surface;  // STL file
+  double radius = 0;    // R, mm
+  double length = 0;    // flute length L, mm
   StrategyOptions strategy;
   std::string feed = "x";
   std::string inclinationAxis = "normal";
-  std::string normals = "up";    // up | file
-  double mapTolerance = 1e-2;    // mm
-  double gridSpacing = 0;        // mm; <= 0: longest side / 300
-  double axisTolerance = 2e-3;   // mm, sweep of moves that turn the axis (< mapTolerance)
+  std::string normals = "up";   // up | file
+  double mapTolerance = 1e-2;   // mm
+  double gridSpacing = 0;       // mm; <= 0: longest side / 300
+  double axisTolerance = 2e-3;  // mm, sweep of moves that turn the axis (< mapTolerance)
   bool noMap = false;
-  std::string posturesCsv;       // optional
-  std::string outDir;            // optional
+  std::string posturesCsv;  // optional
+  std::string outDir;       // optional
   bool json = false;
   int threads = 0;
 };

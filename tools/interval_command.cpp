@@ -1,10 +1,10 @@
 #include "tools/interval_command.h"
 
-#include <CLI/CLI.hpp>
+#include <fmt/core.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
-#include <fmt/core.h>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -22,7 +22,9 @@ const char* const kSources[] = {"seed 000 Fig. 1, Eqs. (1)-(3)", "seed 000 Eqs. 
                                 "seed 000 Eqs. (9), (8)", "seed 000 Eqs. (10), (11)",
                                 "seed 001 Eq. (1)"};
 
-json numberOrNull(bool valid, double v) { return valid ? json(v) : json(nullptr); }
+json numberOrNull(bool valid, double v) {
+  return valid ? json(v) : json(nullptr);
+}
 
 }  // namespace
 
@@ -108,8 +110,8 @@ json toJson(const IntervalComparison& c) {
 
 void checkAngleOption(const char* option, double deg) {
   if (!std::isfinite(deg) || std::fabs(deg) >= 90)
-    throw InputError(option, "must be an angle in degrees with |angle| < 90, got " +
-                                 fmt::format("{:g}", deg));
+    throw InputError(
+        option, "must be an angle in degrees with |angle| < 90, got " + fmt::format("{:g}", deg));
 }
 
 Cutter cutterFromOptions(const std::string& tool, double radius, double cornerRadius,
@@ -119,8 +121,9 @@ Cutter cutterFromOptions(const std::string& tool, double radius, double cornerRa
     throw InputError("--radius", "must be a length > 0 mm, got " + fmt::format("{:g}", radius));
   if (type != CutterType::Bull) {
     if (cornerGiven)
-      throw InputError("--corner-radius", std::string("only a bull cutter has a corner radius; a ") +
-                                              toString(type) + " cutter's is fixed");
+      throw InputError("--corner-radius",
+                       std::string("only a bull cutter has a corner radius; a ") + toString(type) +
+                           " cutter's is fixed");
     return Cutter::make(type, radius, 0, 0, "tool");
   }
   if (!std::isfinite(cornerRadius) || cornerRadius <= 0 || cornerRadius >= radius)
@@ -147,7 +150,8 @@ std::string micrometres(double mm) {
 
 void printTable(const IntervalComparison& c) {
   std::printf("%s cutter R = %g mm", toString(c.cutter.type), c.cutter.radius);
-  if (c.cutter.type == CutterType::Bull) std::printf(", corner radius = %g mm", c.cutter.cornerRadius);
+  if (c.cutter.type == CutterType::Bull)
+    std::printf(", corner radius = %g mm", c.cutter.cornerRadius);
   std::printf("; lead %g deg, tilt %g deg; target scallop h = %g mm\n", c.leadDeg, c.tiltDeg,
               c.scallopMm);
   std::printf("simulated exact L/2 = %.6f mm (+c side %.6f mm, -c side %.6f mm)\n\n",
@@ -167,23 +171,26 @@ void printTable(const IntervalComparison& c) {
                 scallop.c_str(), error.c_str(),
                 micrometres(p.halfIntervalMm - c.exact.halfIntervalMm()).c_str(), p.source.c_str());
   }
-  std::printf("\nerror = simulated scallop left by two passes 2 L/2 apart - h; "
-              "exact = where a simulated pass rises h above its floor\n");
+  std::printf(
+      "\nerror = simulated scallop left by two passes 2 L/2 apart - h; "
+      "exact = where a simulated pass rises h above its floor\n");
 }
 
 int runInterval(const IntervalArgs& args) {
   const CutterType type = parseCutterType(args.tool, "--tool");
   const bool cornerGiven = args.cornerOption->count() > 0;
   if (type == CutterType::Bull && !cornerGiven) {
-    std::fprintf(stderr, "scallop: error: --corner-radius is required for --tool bull\n"
-                         "Run with --help for more information.\n");
+    std::fprintf(stderr,
+                 "scallop: error: --corner-radius is required for --tool bull\n"
+                 "Run with --help for more information.\n");
     return 2;
   }
   const Cutter cutter = cutterFromOptions(args.tool, args.radius, args.cornerRadius, cornerGiven);
   checkAngleOption("--lead", args.leadDeg);
   checkAngleOption("--tilt", args.tiltDeg);
   if (!std::isfinite(args.scallop) || args.scallop <= 0)
-    throw InputError("--scallop", "must be a height > 0 mm, got " + fmt::format("{:g}", args.scallop));
+    throw InputError("--scallop",
+                     "must be a height > 0 mm, got " + fmt::format("{:g}", args.scallop));
 
   const SimulatedPass pass(cutter, args.leadDeg, args.tiltDeg);
   const IntervalComparison comparison = compareIntervals(pass, args.scallop);

@@ -52,8 +52,7 @@ double number(const json& obj, const std::string& key, const std::string& field,
 Vec3 point(const json& obj, const std::string& key, const std::string& field) {
   if (!obj.contains(key)) throw InputError(field, "missing; expected [x, y, z] in mm");
   const json& v = obj.at(key);
-  if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
-      !v[2].is_number())
+  if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
     throw InputError(field, "expected [x, y, z] (three numbers, mm), got " + v.dump());
   const Vec3 p{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
   if (!isFinite(p)) throw InputError(field, "coordinates must be finite");
@@ -86,8 +85,8 @@ Cutter parseTool(const json& tool) {
     corner = number(tool, "corner_radius", "tool.corner_radius");
   } else if (tool.contains("corner_radius")) {
     throw InputError("tool.corner_radius",
-                     std::string("only a bull cutter takes a corner radius (a ") +
-                         toString(type) + " cutter's is fixed)");
+                     std::string("only a bull cutter takes a corner radius (a ") + toString(type) +
+                         " cutter's is fixed)");
   }
   const double flute = number(tool, "flute_length", "tool.flute_length", &zero);
   if (tool.contains("flute_length") && flute <= 0)
@@ -97,12 +96,13 @@ Cutter parseTool(const json& tool) {
 
 RasterSpec parseRaster(const json& r) {
   const std::string f = "path.raster.";
-  rejectUnknownKeys(r, {"direction", "step_over", "depth", "lead_deg", "tilt_deg", "zigzag",
-                        "segment_length"},
-                    "path.raster");
+  rejectUnknownKeys(
+      r, {"direction", "step_over", "depth", "lead_deg", "tilt_deg", "zigzag", "segment_length"},
+      "path.raster");
   RasterSpec spec;
   const std::string dir = text(r, "direction", f + "direction");
-  if (dir != "x" && dir != "y") throw InputError(f + "direction", "expected \"x\" or \"y\", got \"" + dir + "\"");
+  if (dir != "x" && dir != "y")
+    throw InputError(f + "direction", "expected \"x\" or \"y\", got \"" + dir + "\"");
   spec.direction = dir[0];
   const double zero = 0;
   spec.stepOver = number(r, "step_over", f + "step_over");
@@ -118,8 +118,10 @@ RasterSpec parseRaster(const json& r) {
 std::string lineColumn(const std::string& s, size_t byte) {
   size_t line = 1, col = 1;
   for (size_t k = 0; k + 1 < byte && k < s.size(); ++k) {
-    if (s[k] == '\n') ++line, col = 1;
-    else ++col;
+    if (s[k] == '\n')
+      ++line, col = 1;
+    else
+      ++col;
   }
   return std::to_string(line) + ":" + std::to_string(col);
 }

@@ -18,12 +18,12 @@ struct Job {
   std::string source;  // file name, or "built-in default job"
   Cutter cutter;
   Box3 stock;
-  double spacing = 0;          // grid cell side, mm
-  double axisTolerance = 1e-4; // mm, see SweepOptions
+  double spacing = 0;           // grid cell side, mm
+  double axisTolerance = 1e-4;  // mm, see SweepOptions
   bool isRaster = false;
-  RasterSpec raster;           // when isRaster
-  std::string pathFile;        // when not: the tool-path file, resolved to a path
-  ToolPath path;               // built from either
+  RasterSpec raster;     // when isRaster
+  std::string pathFile;  // when not: the tool-path file, resolved to a path
+  ToolPath path;         // built from either
 
   GridSpec grid() const;
 };

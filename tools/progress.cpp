@@ -6,12 +6,16 @@
 
 namespace scallop {
 
-bool ProgressBar::enabled() { return isatty(STDERR_FILENO) == 1; }
+bool ProgressBar::enabled() {
+  return isatty(STDERR_FILENO) == 1;
+}
 
 ProgressBar::ProgressBar(std::string label)
     : label_(std::move(label)), start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+  finish();
+}
 
 void ProgressBar::update(int64_t done, int64_t total) {
   if (!enabled() || total <= 0) return;

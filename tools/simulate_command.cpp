@@ -1,15 +1,14 @@
 #include "tools/simulate_command.h"
 
+#include <fmt/core.h>
 #include <tbb/info.h>
 
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/core.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -68,7 +67,8 @@ int runSimulate(const SimulateArgs& args) {
 
   const GridSpec grid = job.grid();
   if (!args.json)
-    std::fprintf(stderr, "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
+    std::fprintf(stderr,
+                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
                  job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
                  job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing);
 
@@ -82,7 +82,8 @@ int runSimulate(const SimulateArgs& args) {
     // The classical z-map baseline (raycast/stamp_caster.h), reported in the same slots.
     StampOptions stamp;
     stamp.progress = options.cast.progress;
-    StampSimulationResult st = simulateStamped(job.cutter, job.path, job.stock, grid, options.sweep, stamp);
+    StampSimulationResult st =
+        simulateStamped(job.cutter, job.path, job.stock, grid, options.sweep, stamp);
     sim.map = std::move(st.map);
     sim.scene.segments = st.segments;
     sim.cast.cells = st.stamp.cells;
@@ -97,8 +98,8 @@ int runSimulate(const SimulateArgs& args) {
   // --- Outputs, each written to a temporary name and renamed when complete. ---------
   namespace fs = std::filesystem;
   const auto tWrite = std::chrono::steady_clock::now();
-  const std::string title = "scallop " + std::string(toString(job.cutter.type)) + " R=" +
-                            fmt::format("{:g}", job.cutter.radius) + " MM";
+  const std::string title = "scallop " + std::string(toString(job.cutter.type)) +
+                            " R=" + fmt::format("{:g}", job.cutter.radius) + " MM";
   const std::string exr = (fs::path(args.outDir) / "heights.exr").string();
   const std::string gsf = (fs::path(args.outDir) / "heights.gsf").string();
   const std::string png = (fs::path(args.outDir) / "preview.png").string();
@@ -131,10 +132,11 @@ int runSimulate(const SimulateArgs& args) {
                     {"write", writeSeconds},
                     {"total", secondsSince(tStart)}};
   r["threads"] = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
-  json meas = {{"min_height", sim.map.minHeight()},
-               {"max_height", sim.map.maxHeight()},
-               {"exact_evaluations_per_cell", sim.cast.evaluationsPerCell()},
-               {"mcells_per_s", sim.cast.seconds > 0 ? sim.cast.cells / sim.cast.seconds / 1e6 : 0.0}};
+  json meas = {
+      {"min_height", sim.map.minHeight()},
+      {"max_height", sim.map.maxHeight()},
+      {"exact_evaluations_per_cell", sim.cast.evaluationsPerCell()},
+      {"mcells_per_s", sim.cast.seconds > 0 ? sim.cast.cells / sim.cast.seconds / 1e6 : 0.0}};
   if (job.isRaster) meas.update(rasterMeasurements(job, sim.map));
   r["measurements"] = meas;
   r["outputs"] = {"heights.exr", "heights.gsf", "preview.png", "report.json"};
@@ -148,11 +150,14 @@ int runSimulate(const SimulateArgs& args) {
   if (args.json) {
     std::fputs(reportText.c_str(), stdout);
   } else {
-    std::printf("heights: %lld x %lld cells, z in [%.6f, %.6f] mm, %.2f exact evaluations per cell, %.2f s\n",
-                (long long)grid.nx, (long long)grid.ny, sim.map.minHeight(), sim.map.maxHeight(),
-                sim.cast.evaluationsPerCell(), sim.cast.seconds);
+    std::printf(
+        "heights: %lld x %lld cells, z in [%.6f, %.6f] mm, %.2f exact evaluations per cell, %.2f "
+        "s\n",
+        (long long)grid.nx, (long long)grid.ny, sim.map.minHeight(), sim.map.maxHeight(),
+        sim.cast.evaluationsPerCell(), sim.cast.seconds);
     if (meas.contains("max_scallop_height"))
-      std::printf("largest scallop between passes: %.6f mm\n", meas["max_scallop_height"].get<double>());
+      std::printf("largest scallop between passes: %.6f mm\n",
+                  meas["max_scallop_height"].get<double>());
     std::printf("wrote %s\n      %s\n      %s\n      %s\n", exr.c_str(), gsf.c_str(), png.c_str(),
                 report.c_str());
   }
@@ -174,8 +179,9 @@ constexpr const char* kSimulateHelp =
 }  // namespace
 
 void addThreadsOption(CLI::App& command, CommonOptions& common) {
-  command.add_option("--threads", common.threads,
-                     "Worker threads (default: all cores); results do not depend on it")
+  command
+      .add_option("--threads", common.threads,
+                  "Worker threads (default: all cores); results do not depend on it")
       ->check(CLI::NonNegativeNumber);
 }
 

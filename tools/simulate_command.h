@@ -7,10 +7,10 @@
 namespace scallop {
 
 struct SimulateArgs {
-  std::string jobFile;   // empty: the built-in default job
+  std::string jobFile;  // empty: the built-in default job
   std::string outDir = "scallop-out";
-  int threads = 0;       // 0: all cores
-  bool json = false;     // print report.json on stdout
+  int threads = 0;               // 0: all cores
+  bool json = false;             // print report.json on stdout
   std::string method = "exact";  // "exact" or "stamp" (raycast/stamp_caster.h)
 };
 

@@ -17,7 +17,9 @@
 
 namespace scallop {
 
-const char* toString(StlFormat format) { return format == StlFormat::Binary ? "binary" : "ascii"; }
+const char* toString(StlFormat format) {
+  return format == StlFormat::Binary ? "binary" : "ascii";
+}
 
 namespace {
 
@@ -52,9 +54,9 @@ std::vector<std::array<Vec3, 3>> parseBinary(const std::string& bytes, const std
       const char* v = rec + 12 + 12 * k;  // after the stored normal
       tri[size_t(k)] = {double(readF32(v)), double(readF32(v + 4)), double(readF32(v + 8))};
       if (!isFinite(tri[size_t(k)]))
-        throw InputError(name, fmt::format("triangle {}: vertex {} has a non-finite coordinate ({}, {}, {})",
-                                           t + 1, k + 1, tri[size_t(k)].x, tri[size_t(k)].y,
-                                           tri[size_t(k)].z));
+        throw InputError(
+            name, fmt::format("triangle {}: vertex {} has a non-finite coordinate ({}, {}, {})",
+                              t + 1, k + 1, tri[size_t(k)].x, tri[size_t(k)].y, tri[size_t(k)].z));
     }
     soup.push_back(tri);
   }
@@ -99,7 +101,8 @@ class Tokens {
     throw InputError(fmt::format("{}:{}", name_, tokenLine_), what);
   }
   static std::string quoted(const std::string& t) {
-    return t.empty() ? "the end of the file" : "'" + (t.size() > 40 ? t.substr(0, 40) + "..." : t) + "'";
+    return t.empty() ? "the end of the file"
+                     : "'" + (t.size() > 40 ? t.substr(0, 40) + "..." : t) + "'";
   }
 
  private:
@@ -120,7 +123,9 @@ std::vector<std::array<Vec3, 3>> parseAscii(const std::string& bytes, const std:
       tk.skipLine();
       const std::string after = tk.next();
       if (after.empty()) break;
-      if (after != "solid") tk.fail("expected 'solid' or the end of the file after 'endsolid', found " + Tokens::quoted(after));
+      if (after != "solid")
+        tk.fail("expected 'solid' or the end of the file after 'endsolid', found " +
+                Tokens::quoted(after));
       tk.skipLine();
       continue;
     }
@@ -138,7 +143,8 @@ std::vector<std::array<Vec3, 3>> parseAscii(const std::string& bytes, const std:
     for (int k = 0; k < 3; ++k) {
       tk.expect("vertex", ctx);
       const std::string what = fmt::format("vertex coordinate{}", ctx);
-      const double x = tk.number(what.c_str()), y = tk.number(what.c_str()), z = tk.number(what.c_str());
+      const double x = tk.number(what.c_str()), y = tk.number(what.c_str()),
+                   z = tk.number(what.c_str());
       tri[size_t(k)] = {x, y, z};
     }
     tk.expect("endloop", ctx + " (a facet has exactly 3 vertices)");
@@ -166,14 +172,18 @@ std::vector<std::array<Vec3, 3>> parseStl(const std::string& bytes, const std::s
           bytes.size() < expected
               ? fmt::format("truncated in triangle {}", (bytes.size() - kHeader) / kRecord + 1)
               : fmt::format("{} bytes too long", bytes.size() - expected);
-      throw InputError(name, fmt::format("not a valid STL: not ASCII STL text (which begins with 'solid'), and as "
-                                         "binary its header declares {} triangles ({} bytes) but the file has "
-                                         "{} bytes: {}",
-                                         n, expected, bytes.size(), asBinary));
+      throw InputError(
+          name,
+          fmt::format("not a valid STL: not ASCII STL text (which begins with 'solid'), and as "
+                      "binary its header declares {} triangles ({} bytes) but the file has "
+                      "{} bytes: {}",
+                      n, expected, bytes.size(), asBinary));
     }
   } else if (!startsWithSolid(bytes)) {
-    throw InputError(name, fmt::format("not an STL file: {} bytes, shorter than a binary STL's 84-byte "
-                                       "header, and it does not begin with 'solid'", bytes.size()));
+    throw InputError(name,
+                     fmt::format("not an STL file: {} bytes, shorter than a binary STL's 84-byte "
+                                 "header, and it does not begin with 'solid'",
+                                 bytes.size()));
   }
   if (format) *format = StlFormat::Ascii;
   return parseAscii(bytes, name);
@@ -210,7 +220,8 @@ void writeStl(const TriangleMesh& mesh, const std::string& path, StlFormat forma
       h.resize(80, ' ');
       out.write(h.data(), 80);
       const uint32_t n = uint32_t(mesh.triangles.size());
-      const unsigned char cnt[4] = {uint8_t(n), uint8_t(n >> 8), uint8_t(n >> 16), uint8_t(n >> 24)};
+      const unsigned char cnt[4] = {uint8_t(n), uint8_t(n >> 8), uint8_t(n >> 16),
+                                    uint8_t(n >> 24)};
       out.write(reinterpret_cast<const char*>(cnt), 4);
       for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         float rec[12];
@@ -228,10 +239,11 @@ void writeStl(const TriangleMesh& mesh, const std::string& path, StlFormat forma
       out << "solid " << header << "\n";
       for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const Vec3& nn = mesh.normals[t];
-        out << fmt::format("  facet normal {:.9g} {:.9g} {:.9g}\n    outer loop\n", nn.x, nn.y, nn.z);
+        out << fmt::format("  facet normal {:.9g} {:.9g} {:.9g}\n    outer loop\n", nn.x, nn.y,
+                           nn.z);
         for (const Vec3& v : mesh.corners(t))
-          out << fmt::format("      vertex {:.17g} {:.17g} {:.17g}\n", double(float(v.x)), double(float(v.y)),
-                             double(float(v.z)));
+          out << fmt::format("      vertex {:.17g} {:.17g} {:.17g}\n", double(float(v.x)),
+                             double(float(v.y)), double(float(v.z)));
         out << "    endloop\n  endfacet\n";
       }
       out << "endsolid " << header << "\n";

@@ -1,8 +1,8 @@
 #include "tools/surface_command.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -19,8 +19,9 @@ int runSurface(SurfaceArgs args) {
   args.spec.shape = parseSurfaceShape(args.shape);
   if (args.output.empty()) throw InputError("-o", "an output STL file is required");
   const TriangleMesh mesh = makeTestSurface(args.spec);
-  const std::string header = fmt::format("scallop surface {} {:g} x {:g} mm h={:g} mm", args.shape,
-                                         args.spec.sizeX, args.spec.sizeY, args.spec.heightOrDefault());
+  const std::string header =
+      fmt::format("scallop surface {} {:g} x {:g} mm h={:g} mm", args.shape, args.spec.sizeX,
+                  args.spec.sizeY, args.spec.heightOrDefault());
   writeStl(mesh, args.output, args.ascii ? StlFormat::Ascii : StlFormat::Binary, header);
   const Box3 box = mesh.bounds();
   if (args.json) {
@@ -32,12 +33,14 @@ int runSurface(SurfaceArgs args) {
                         {"triangles", mesh.triangles.size()},
                         {"vertices", mesh.vertices.size()},
                         {"z_range_mm", {box.min.z, box.max.z}}};
-    if (args.spec.shape == SurfaceShape::Trough) j["trough_radius_mm"] = args.spec.troughRadiusOrDefault();
+    if (args.spec.shape == SurfaceShape::Trough)
+      j["trough_radius_mm"] = args.spec.troughRadiusOrDefault();
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("wrote %s: %s %g x %g mm, z in [%.6g, %.6g] mm, %zu triangles, %zu vertices (%s STL)\n",
-                args.output.c_str(), args.shape.c_str(), args.spec.sizeX, args.spec.sizeY, box.min.z,
-                box.max.z, mesh.triangles.size(), mesh.vertices.size(), args.ascii ? "ASCII" : "binary");
+    std::printf(
+        "wrote %s: %s %g x %g mm, z in [%.6g, %.6g] mm, %zu triangles, %zu vertices (%s STL)\n",
+        args.output.c_str(), args.shape.c_str(), args.spec.sizeX, args.spec.sizeY, box.min.z,
+        box.max.z, mesh.triangles.size(), mesh.vertices.size(), args.ascii ? "ASCII" : "binary");
   }
   return 0;
 }
@@ -63,11 +66,15 @@ Command addSurfaceCommand(CLI::App& parent, CommonOptions&) {
   CLI::App* app = parent.add_subcommand("surface", kSurfaceHelp);
   app->add_option("--shape", args->shape, "dome | bowl | saddle | wave | plane | trough")
       ->capture_default_str();
-  app->add_option("--size", *size, "X Y: extent of the surface, mm")->expected(2)->capture_default_str();
+  app->add_option("--size", *size, "X Y: extent of the surface, mm")
+      ->expected(2)
+      ->capture_default_str();
   app->add_option("--facets", args->spec.facets, "Approximate number of triangles (facet density)")
       ->capture_default_str();
-  app->add_option("--height", args->spec.height, "Height h of the shape, mm (default 0.2 min(X, Y))");
-  app->add_option("--trough-radius", args->spec.troughRadius, "Groove radius r of the trough, mm (default X/8)");
+  app->add_option("--height", args->spec.height,
+                  "Height h of the shape, mm (default 0.2 min(X, Y))");
+  app->add_option("--trough-radius", args->spec.troughRadius,
+                  "Groove radius r of the trough, mm (default X/8)");
   app->add_option("-o,--output", args->output, "Output STL file (written atomically)")->required();
   app->add_flag("--ascii", args->ascii, "Write ASCII STL (default binary)");
   app->add_flag("--json", args->json, "Print a JSON summary on stdout (and nothing else there)");

@@ -11,9 +11,9 @@ namespace scallop {
 struct SurfaceArgs {
   SurfaceSpec spec;
   std::string shape = "dome";
-  std::string output;   // FILE.stl
-  bool ascii = false;   // ASCII STL instead of binary
-  bool json = false;    // print the summary as JSON on stdout
+  std::string output;  // FILE.stl
+  bool ascii = false;  // ASCII STL instead of binary
+  bool json = false;   // print the summary as JSON on stdout
 };
 
 // Returns the exit status; throws InputError for bad input.

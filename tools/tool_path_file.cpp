@@ -29,11 +29,12 @@ ToolPath parseToolPath(const std::string& text, const std::string& source) {
     int n = 0;
     while (n < 7 && fields >> v[n]) ++n;
     if (!fields.eof() && n < 7) {
-      throw InputError(where, "expected numbers \"x y z\" or \"x y z i j k\", got \"" + line + "\"");
+      throw InputError(where,
+                       "expected numbers \"x y z\" or \"x y z i j k\", got \"" + line + "\"");
     }
     if (n != 3 && n != 6)
-      throw InputError(where, "expected 3 numbers (x y z) or 6 (x y z i j k), got " +
-                                  std::to_string(n));
+      throw InputError(where,
+                       "expected 3 numbers (x y z) or 6 (x y z i j k), got " + std::to_string(n));
     for (int k = 0; k < n; ++k)
       if (!std::isfinite(v[k])) throw InputError(where, "coordinates must be finite numbers");
     Pose pose{{v[0], v[1], v[2]}, {0, 0, 1}};

@@ -1,12 +1,12 @@
 #include "tools/validate_command.h"
 
-#include <CLI/CLI.hpp>
+#include <fmt/core.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/core.h>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -61,14 +61,22 @@ struct Seed001Condition {
   double filSl1, filSl2, filV1, filV2;
 };
 const Seed001Condition kSeed001[] = {
-    {"B1a", "F1a", 3, 1, 0.05, 1400, 0.545, 1.442, 5.21, 1.71, 14.59, 4.80, 4.46, 2.13, 25.22, 20.43},
-    {"B1b", "F1b", 3, 1, 0.10, 1400, 0.768, 1.879, 5.21, 2.41, 14.59, 6.76, 4.46, 2.70, 25.22, 21.49},
-    {"B2a", "F2a", 5, 1, 0.05, 1400, 0.705, 2.090, 6.85, 2.22, 19.17, 6.20, 5.75, 2.90, 42.81, 38.03},
-    {"B2b", "F2b", 5, 1, 0.10, 1400, 0.995, 2.843, 6.85, 3.13, 19.17, 8.75, 5.75, 3.62, 42.81, 39.08},
-    {"B3a", "F3a", 6, 2, 0.05, 1200, 0.773, 2.115, 7.53, 2.43, 18.08, 5.83, 7.29, 3.33, 40.18, 33.75},
-    {"B3b", "F3b", 6, 2, 0.10, 1200, 1.091, 2.884, 7.53, 3.43, 18.08, 8.22, 7.29, 4.26, 40.18, 35.03},
-    {"B4a", "F4a", 7, 3, 0.05, 1200, 0.835, 2.140, 8.16, 2.62, 19.59, 6.30, 8.31, 3.59, 42.77, 34.71},
-    {"B4b", "F4b", 7, 3, 0.10, 1200, 1.179, 2.924, 8.16, 3.70, 19.59, 8.89, 8.31, 4.67, 42.77, 36.26},
+    {"B1a", "F1a", 3, 1, 0.05, 1400, 0.545, 1.442, 5.21, 1.71, 14.59, 4.80, 4.46, 2.13, 25.22,
+     20.43},
+    {"B1b", "F1b", 3, 1, 0.10, 1400, 0.768, 1.879, 5.21, 2.41, 14.59, 6.76, 4.46, 2.70, 25.22,
+     21.49},
+    {"B2a", "F2a", 5, 1, 0.05, 1400, 0.705, 2.090, 6.85, 2.22, 19.17, 6.20, 5.75, 2.90, 42.81,
+     38.03},
+    {"B2b", "F2b", 5, 1, 0.10, 1400, 0.995, 2.843, 6.85, 3.13, 19.17, 8.75, 5.75, 3.62, 42.81,
+     39.08},
+    {"B3a", "F3a", 6, 2, 0.05, 1200, 0.773, 2.115, 7.53, 2.43, 18.08, 5.83, 7.29, 3.33, 40.18,
+     33.75},
+    {"B3b", "F3b", 6, 2, 0.10, 1200, 1.091, 2.884, 7.53, 3.43, 18.08, 8.22, 7.29, 4.26, 40.18,
+     35.03},
+    {"B4a", "F4a", 7, 3, 0.05, 1200, 0.835, 2.140, 8.16, 2.62, 19.59, 6.30, 8.31, 3.59, 42.77,
+     34.71},
+    {"B4b", "F4b", 7, 3, 0.10, 1200, 1.179, 2.924, 8.16, 3.70, 19.59, 8.89, 8.31, 4.67, 42.77,
+     36.26},
 };
 constexpr double kSeed001Inclination = 5.0;  // deg, filleted end milling
 constexpr double kSeed001DepthOfCut = 0.5;   // mm
@@ -173,16 +181,17 @@ std::string profilePicture(const SimulatedPass& pass, const std::string& title, 
   plot.addLine(x, y, "#222", "simulated profile of one pass", 2.2);
   plot.addHorizontalLine(1000 * h, "#888", fmt::format("target h = {:g} \xC2\xB5m", 1000 * h), 1.5,
                          "6 4");
-  plot.addVerticalLine(exactL2, "#222", fmt::format("simulated exact L/2 = {:.4f} mm", exactL2), 1.5,
-                       "6 4");
+  plot.addVerticalLine(exactL2, "#222", fmt::format("simulated exact L/2 = {:.4f} mm", exactL2),
+                       1.5, "6 4");
   for (const Marker& m : markers) {
     const SimulatedCusp cusp = pass.cusp(2 * m.halfIntervalMm);
-    const std::string left =
-        cusp.covered ? fmt::format("scallop {:.1f} \xC2\xB5m ({:+.1f} \xC2\xB5m)", 1000 * cusp.heightMm,
-                                   1000 * (cusp.heightMm - h))
-                     : std::string("uncut strip");
+    const std::string left = cusp.covered
+                                 ? fmt::format("scallop {:.1f} \xC2\xB5m ({:+.1f} \xC2\xB5m)",
+                                               1000 * cusp.heightMm, 1000 * (cusp.heightMm - h))
+                                 : std::string("uncut strip");
     plot.addVerticalLine(m.halfIntervalMm, m.colour,
-                         fmt::format("{} L/2 = {:.3f} mm: {}", m.name, m.halfIntervalMm, left), 1.8);
+                         fmt::format("{} L/2 = {:.3f} mm: {}", m.name, m.halfIntervalMm, left),
+                         1.8);
     plot.addPoint(m.halfIntervalMm, 1000 * pass.heightAboveFloor(m.halfIntervalMm), m.colour);
   }
   return plot.render();
@@ -214,25 +223,30 @@ const HalfIntervalFn kL2Fns[] = {computationalL2, halfIntervalSekine, halfInterv
 const HalfIntervalFn kHFns[] = {computationalH, scallopHeightSekine, scallopHeightRedonnet,
                                 scallopHeightBedi};
 
-json valueOrNull(const ProcedureResult& r) { return r.applicable ? json(r.value) : json(nullptr); }
+json valueOrNull(const ProcedureResult& r) {
+  return r.applicable ? json(r.value) : json(nullptr);
+}
 
 void seed000(Run& run) {
   for (int which = 0; which < 2; ++which) {
     const int lTable = 2 + which;
     Table lt{fmt::format("seed000_table{}", lTable),
              fmt::format("Seed 000 Table {}: L/2 by each procedure, R = {} mm, Rcr = {} mm; "
-                         "simulated truth beside the printed values", lTable, 3 * (which + 1), which + 1),
+                         "simulated truth beside the printed values",
+                         lTable, 3 * (which + 1), which + 1),
              {"condition", "rho_deg", "h_mm", "procedure", "printed_half_interval_mm",
               "computed_half_interval_mm", "simulated_scallop_at_printed_mm", "scallop_error_um",
               "simulated_scallop_at_computed_mm", "simulated_exact_half_interval_mm",
-              "printed_minus_exact_um"}, {}};
+              "printed_minus_exact_um"},
+             {}};
     Table ht{fmt::format("seed000_table{}", lTable + 2),
              fmt::format("Seed 000 Table {}: h from the printed computational L/2, R = {} mm, "
                          "Rcr = {} mm; the simulated (true) scallop of that L/2 beside",
                          lTable + 2, 3 * (which + 1), which + 1),
              {"condition", "rho_deg", "printed_half_interval_mm", "procedure", "printed_h_mm",
               "computed_h_mm", "simulated_h_mm", "printed_minus_simulated_um",
-              "computed_minus_simulated_um"}, {}};
+              "computed_minus_simulated_um"},
+             {}};
     for (const Seed000Condition& c : kSeed000) {
       if (c.lTable != lTable) continue;
       const SimulatedPass pass(Cutter::make(CutterType::Bull, c.radius, c.corner), c.rho, 0);
@@ -245,7 +259,8 @@ void seed000(Run& run) {
         lt.rows.push_back({c.index, c.rho, c.h, kProcedures[p], c.printedL2[p], valueOrNull(l2),
                            atPrinted, 1000 * (atPrinted - c.h),
                            l2.applicable ? json(pass.cusp(2 * l2.value).heightMm) : json(nullptr),
-                           exact.halfIntervalMm(), 1000 * (c.printedL2[p] - exact.halfIntervalMm())});
+                           exact.halfIntervalMm(),
+                           1000 * (c.printedL2[p] - exact.halfIntervalMm())});
         const ProcedureResult h = kHFns[p](c.radius, c.corner, c.rho, c.printedL2[0]);
         ht.rows.push_back({c.index, c.rho, c.printedL2[0], kProcedures[p], c.printedH[p],
                            valueOrNull(h), trueH, 1000 * (c.printedH[p] - trueH),
@@ -253,11 +268,12 @@ void seed000(Run& run) {
         markers.push_back({kProcedures[p], c.printedL2[p], kColours[p]});
       }
       run.picture(fmt::format("seed000_table{}_condition{}", lTable, c.index),
-                  profilePicture(pass,
-                                 fmt::format("Seed 000 Table {} condition {}: bull R = {:g}, Rcr = {:g} mm, "
-                                             "\xCF\x81 = {:g}\xC2\xB0, h = {:g} mm (printed L/2)",
-                                             lTable, c.index, c.radius, c.corner, c.rho, c.h),
-                                 c.h, exact.halfIntervalMm(), markers));
+                  profilePicture(
+                      pass,
+                      fmt::format("Seed 000 Table {} condition {}: bull R = {:g}, Rcr = {:g} mm, "
+                                  "\xCF\x81 = {:g}\xC2\xB0, h = {:g} mm (printed L/2)",
+                                  lTable, c.index, c.radius, c.corner, c.rho, c.h),
+                      c.h, exact.halfIntervalMm(), markers));
     }
     run.tables.push_back(lt);
     run.tables.push_back(ht);
@@ -266,25 +282,39 @@ void seed000(Run& run) {
 }
 
 void seed001(Run& run) {
-  const std::vector<std::string> cols = {"condition", "radius_mm", "corner_radius_mm", "lead_deg",
-                                         "h_mm", "printed_half_interval_mm",
+  const std::vector<std::string> cols = {"condition",
+                                         "radius_mm",
+                                         "corner_radius_mm",
+                                         "lead_deg",
+                                         "h_mm",
+                                         "printed_half_interval_mm",
                                          "computed_half_interval_mm",
-                                         "simulated_scallop_at_printed_mm", "scallop_error_um",
-                                         "simulated_exact_half_interval_mm", "printed_minus_exact_um"};
-  Table t1{"seed001_table1", "Seed 001 Table 1: ball end mill L/2 (Eq. 1), no inclination", cols, {}};
-  Table t2{"seed001_table2", "Seed 001 Table 2: filleted end mill L/2 (computational), theta = 5 deg",
-           cols, {}};
-  const std::vector<std::string> tcCols = {"condition", "radius_mm", "corner_radius_mm", "h_mm",
-                                           "parameter", "unit", "printed", "computed",
-                                           "computed_minus_printed", "simulated"};
+                                         "simulated_scallop_at_printed_mm",
+                                         "scallop_error_um",
+                                         "simulated_exact_half_interval_mm",
+                                         "printed_minus_exact_um"};
+  Table t1{
+      "seed001_table1", "Seed 001 Table 1: ball end mill L/2 (Eq. 1), no inclination", cols, {}};
+  Table t2{"seed001_table2",
+           "Seed 001 Table 2: filleted end mill L/2 (computational), theta = 5 deg",
+           cols,
+           {}};
+  const std::vector<std::string> tcCols = {
+      "condition", "radius_mm", "corner_radius_mm",       "h_mm",     "parameter", "unit",
+      "printed",   "computed",  "computed_minus_printed", "simulated"};
   const char* const notSimulated = "n/a";  // a tool condition parameter, not a surface height
-  Table t3{"seed001_table3", "Seed 001 Table 3: ball end mill sl_fd and v_cs (ap = 0.5 mm); tool condition "
-           "parameters, not surface heights: nothing to simulate", tcCols, {}};
+  Table t3{"seed001_table3",
+           "Seed 001 Table 3: ball end mill sl_fd and v_cs (ap = 0.5 mm); tool condition "
+           "parameters, not surface heights: nothing to simulate",
+           tcCols,
+           {}};
   Table t4{"seed001_table4",
            "Seed 001 Table 4: filleted end mill sl_fd and v_cs (ap = 0.5 mm, theta = 5 deg); "
-           "tool condition parameters, not surface heights: nothing to simulate", tcCols, {}};
-  auto conditions = [&](Table& t, const char* name, double R, double r, double h, const ToolConditions& a,
-                        const ToolConditions& b, const double printed[4]) {
+           "tool condition parameters, not surface heights: nothing to simulate",
+           tcCols,
+           {}};
+  auto conditions = [&](Table& t, const char* name, double R, double r, double h,
+                        const ToolConditions& a, const ToolConditions& b, const double printed[4]) {
     const char* params[] = {"sl_fd(1)", "sl_fd(2)", "v_cs(1)", "v_cs(2)"};
     const char* units[] = {"mm", "mm", "m/min", "m/min"};
     const double computed[] = {a.frictionalDistanceMm, b.frictionalDistanceMm,
@@ -310,9 +340,10 @@ void seed001(Run& run) {
                            printed, valueOrNull(l2), atPrinted, 1000 * (atPrinted - c.h),
                            exact.halfIntervalMm(), 1000 * (printed - exact.halfIntervalMm())});
       const std::string procedure = filleted ? "computational" : "ball";
-      const std::string tool = filleted ? fmt::format("bull R = {:g}, Rcr = {:g} mm, \xCE\xB8 = 5\xC2\xB0",
-                                                      c.radius, c.corner)
-                                        : fmt::format("ball R = {:g} mm", c.radius);
+      const std::string tool =
+          filleted ? fmt::format("bull R = {:g}, Rcr = {:g} mm, \xCE\xB8 = 5\xC2\xB0", c.radius,
+                                 c.corner)
+                   : fmt::format("ball R = {:g} mm", c.radius);
       run.picture(fmt::format("seed001_table{}_{}", filleted ? 2 : 1, name),
                   profilePicture(pass,
                                  fmt::format("Seed 001 Table {} {}: {}, h = {:g} mm (printed L/2)",
@@ -324,9 +355,10 @@ void seed001(Run& run) {
     conditions(t3, c.ball, c.radius, 0, c.h, ballFirstPass(c.radius, kSeed001DepthOfCut, c.spindle),
                ballLaterPass(c.radius, c.h, c.spindle), ballPrinted);
     const double filPrinted[] = {c.filSl1, c.filSl2, c.filV1, c.filV2};
-    conditions(t4, c.filleted, c.radius, c.corner, c.h,
-               filletedFirstPass(c.radius, c.corner, kSeed001Inclination, kSeed001DepthOfCut, c.spindle),
-               filletedLaterPass(c.radius, c.corner, kSeed001Inclination, c.h, c.spindle), filPrinted);
+    conditions(
+        t4, c.filleted, c.radius, c.corner, c.h,
+        filletedFirstPass(c.radius, c.corner, kSeed001Inclination, kSeed001DepthOfCut, c.spindle),
+        filletedLaterPass(c.radius, c.corner, kSeed001Inclination, c.h, c.spindle), filPrinted);
   }
   for (Table* t : {&t1, &t2, &t3, &t4}) run.tables.push_back(*t);
 }

@@ -11,7 +11,9 @@ namespace scallop {
 namespace {
 
 // Horizontal cylinder along +y: tip (0, 0, R), R = 2, L = 10.
-Cylinder horizontal() { return {{0, 0, 2}, {0, 1, 0}, 2.0, 10.0}; }
+Cylinder horizontal() {
+  return {{0, 0, 2}, {0, 1, 0}, 2.0, 10.0};
+}
 
 TEST(TrianglePenetration, TangentPlaneHasZeroDepth) {
   const Cylinder c = horizontal();
@@ -79,7 +81,8 @@ TEST(TrianglePenetration, AgreesWithDenseSampling) {
     for (int i = 0; i < 3; ++i) spacing = std::max(spacing, length(tri[i] - tri[(i + 1) % 3]) / n);
     for (int i = 0; i <= n; ++i)
       for (int j = 0; i + j <= n; ++j) {
-        const Vec3 p = tri[0] + (tri[1] - tri[0]) * (double(i) / n) + (tri[2] - tri[0]) * (double(j) / n);
+        const Vec3 p =
+            tri[0] + (tri[1] - tri[0]) * (double(i) / n) + (tri[2] - tri[0]) * (double(j) / n);
         const double s = dot(p - c.tip, c.axis);
         if (s < 0 || s > c.length) continue;
         sampled = std::max(sampled, c.radius - length(p - c.tip - c.axis * s));

@@ -26,7 +26,8 @@ TEST(PeripheralStrategy, TiltedPlaneIsMachinableWithoutGouge) {
   auto p = [](double x, double y) { return Vec3{x, y, 0.3 * x + 0.2 * y}; };
   for (int j = 0; j < 10; ++j)
     for (int i = 0; i < 12; ++i)
-      addQuad(soup, p(5 * i, 5 * j), p(5 * i + 5, 5 * j), p(5 * i + 5, 5 * j + 5), p(5 * i, 5 * j + 5));
+      addQuad(soup, p(5 * i, 5 * j), p(5 * i + 5, 5 * j), p(5 * i + 5, 5 * j + 5),
+              p(5 * i, 5 * j + 5));
   const TriangleMesh mesh = meshFromTriangles(soup);
   const MeshIndex index(mesh);
   const Cutter cutter = Cutter::make(CutterType::Flat, 4, 0, 12);
@@ -56,7 +57,8 @@ TEST(PeripheralStrategy, FlatPlaneFromTheGenerator) {
   spec.sizeX = 80, spec.sizeY = 60, spec.facets = 2000;
   const TriangleMesh mesh = makeTestSurface(spec);
   const MeshIndex index(mesh);
-  const StrategyResult r = runPeripheralStrategy(index, Cutter::make(CutterType::Flat, 5, 0, 20), {});
+  const StrategyResult r =
+      runPeripheralStrategy(index, Cutter::make(CutterType::Flat, 5, 0, 20), {});
   ASSERT_GT(r.summary.ccPoints, 0u);
   EXPECT_EQ(r.summary.freeInitial, r.summary.ccPoints);
   EXPECT_EQ(r.summary.planes, 3u);  // 60 mm / 20 mm
@@ -77,7 +79,8 @@ TEST(PeripheralStrategy, TroughNarrowerThanTheCutterIsNonMachinable) {
   const TriangleMesh mesh = makeTestSurface(spec);
   const MeshIndex index(mesh);
   const double R = 5;
-  const StrategyResult r = runPeripheralStrategy(index, Cutter::make(CutterType::Flat, R, 0, 20), {});
+  const StrategyResult r =
+      runPeripheralStrategy(index, Cutter::make(CutterType::Flat, R, 0, 20), {});
   const double rim = std::sqrt(3.0 * 3.0 - 1.0 * 1.0);  // half-width of the groove at z = 0
   size_t inGroove = 0, onFlat = 0;
   for (const PostureResult& q : r.postures) {
@@ -114,10 +117,13 @@ TEST(PeripheralStrategy, CreaseBetweenLargeFacetsGougesUnseenByTheVertexTest) {
   const TriangleMesh mesh = meshFromTriangles(soup);
   const MeshIndex index(mesh);
   const Cutter cutter = Cutter::make(CutterType::Flat, R, 0, 10);
-  auto expected = [&](double a) { return std::max(0.0, R * (1 - std::cos(th)) - a * std::sin(th)); };
+  auto expected = [&](double a) {
+    return std::max(0.0, R * (1 - std::cos(th)) - a * std::sin(th));
+  };
 
   // One posture by hand: a = 0.5 mm on A, depth 5 (1 - cos 30) - 0.25 = 0.41987298...
-  const Pose pose = peripheralPose({-0.5, 20, 0}, {0, 0, 1}, {1, 0, 0}, 0, InclinationAxis::Normal, cutter, 0);
+  const Pose pose =
+      peripheralPose({-0.5, 20, 0}, {0, 0, 1}, {1, 0, 0}, 0, InclinationAxis::Normal, cutter, 0);
   EXPECT_NEAR(pose.tip.z, R, 1e-15);
   EXPECT_NEAR(pose.axis.y, -1.0, 1e-15);
   std::vector<uint32_t> all = {0, 1, 2, 3};
@@ -153,7 +159,8 @@ void expectOffsetDepth(double slopeX, double delta) {
   auto p = [&](double x, double y) { return Vec3{x, y, slopeX * x}; };
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i)
-      addQuad(soup, p(10 * i, 10 * j), p(10 * i + 10, 10 * j), p(10 * i + 10, 10 * j + 10), p(10 * i, 10 * j + 10));
+      addQuad(soup, p(10 * i, 10 * j), p(10 * i + 10, 10 * j), p(10 * i + 10, 10 * j + 10),
+              p(10 * i, 10 * j + 10));
   const TriangleMesh mesh = meshFromTriangles(soup);
   const MeshIndex index(mesh);
   const Cutter cutter = Cutter::make(CutterType::Flat, 3, 0, 10);
@@ -179,12 +186,17 @@ void expectOffsetDepth(double slopeX, double delta) {
   EXPECT_GT(g.stats.overCutCells, 10000);
 }
 
-TEST(GougeMap, PathPushedIntoAPlaneByDelta) { expectOffsetDepth(0.0, 0.05); }
-TEST(GougeMap, PathPushedIntoATiltedPlaneByDelta) { expectOffsetDepth(0.25, 0.02); }
+TEST(GougeMap, PathPushedIntoAPlaneByDelta) {
+  expectOffsetDepth(0.0, 0.05);
+}
+TEST(GougeMap, PathPushedIntoATiltedPlaneByDelta) {
+  expectOffsetDepth(0.25, 0.02);
+}
 
 TEST(GougeMap, DesignHeightsAreThePlanesInDouble) {
   std::vector<std::array<Vec3, 3>> soup;
-  addQuad(soup, {0, 0, 1}, {10, 0, 1 + 0.7 * 10}, {10, 10, 1 + 0.7 * 10 - 0.3 * 10}, {0, 10, 1 - 0.3 * 10});
+  addQuad(soup, {0, 0, 1}, {10, 0, 1 + 0.7 * 10}, {10, 10, 1 + 0.7 * 10 - 0.3 * 10},
+          {0, 10, 1 - 0.3 * 10});
   const TriangleMesh mesh = meshFromTriangles(soup);
   const MeshIndex index(mesh);
   const ZMap z = designHeights(index, gridCovering(0, 0, 10, 10, 0.37));

@@ -43,8 +43,8 @@ TEST(SimulatedInterval, BallMatchesSeed001Eq1InAnyPosture) {
         const SideIntervals s = pass.halfIntervals(h);
         ASSERT_TRUE(s.reachable) << s.reason;
         EXPECT_NEAR(s.plusMm, want, kAcceptanceMm);
-        EXPECT_NEAR(s.plusMm, want, kExactMm) << "R=" << R << " lead=" << p.leadDeg
-                                              << " tilt=" << p.tiltDeg << " h=" << h;
+        EXPECT_NEAR(s.plusMm, want, kExactMm)
+            << "R=" << R << " lead=" << p.leadDeg << " tilt=" << p.tiltDeg << " h=" << h;
         EXPECT_NEAR(s.minusMm, want, kExactMm);
       }
     }
@@ -76,10 +76,10 @@ TEST(SimulatedInterval, BullWithLeadMatchesTheComputationalProcedure) {
   struct Case {
     double R, r, lead, h;
   };
-  for (const Case& c : {Case{3, 1, 5, 0.05}, Case{3, 1, 5, 0.10}, Case{3, 1, 10, 0.05},
-                        Case{3, 1, 10, 0.10}, Case{6, 2, 5, 0.05}, Case{6, 2, 10, 0.10},
-                        Case{5, 1, 5, 0.05}, Case{7, 3, 5, 0.10}, Case{4, 2, 45, 0.5},
-                        Case{3, 1, -10, 0.05}, Case{3, 1, 0, 0.05}}) {
+  for (const Case& c :
+       {Case{3, 1, 5, 0.05}, Case{3, 1, 5, 0.10}, Case{3, 1, 10, 0.05}, Case{3, 1, 10, 0.10},
+        Case{6, 2, 5, 0.05}, Case{6, 2, 10, 0.10}, Case{5, 1, 5, 0.05}, Case{7, 3, 5, 0.10},
+        Case{4, 2, 45, 0.5}, Case{3, 1, -10, 0.05}, Case{3, 1, 0, 0.05}}) {
     SimulatedPass pass(Cutter::make(CutterType::Bull, c.R, c.r), c.lead, 0);
     const SideIntervals s = pass.halfIntervals(c.h);
     ASSERT_TRUE(s.reachable) << s.reason;
@@ -115,8 +115,8 @@ double referenceRoot(const ref::RefCutter& rc, const SimulatedPass& pass, double
 struct BullCase {
   double R, r, lead, tilt, h;
 };
-const BullCase kBullCases[] = {{3, 1, 5, 0, 0.05},  {3, 1, 10, 0, 0.10}, {6, 2, 5, 0, 0.05},
-                               {3, 1, 5, 7, 0.05},  {3, 1, 0, 10, 0.05}, {4, 1.5, 15, -8, 0.1},
+const BullCase kBullCases[] = {{3, 1, 5, 0, 0.05},   {3, 1, 10, 0, 0.10}, {6, 2, 5, 0, 0.05},
+                               {3, 1, 5, 7, 0.05},   {3, 1, 0, 10, 0.05}, {4, 1.5, 15, -8, 0.1},
                                {3, 0.5, 30, 20, 0.2}};
 
 TEST(SimulatedInterval, BullMatchesBruteForceInAnyPosture) {

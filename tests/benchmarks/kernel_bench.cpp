@@ -21,15 +21,22 @@ constexpr int kQueries = 1024;
 
 Cutter cutterOf(int type) {
   switch (type) {
-    case 0: return Cutter::make(CutterType::Ball, 3);
-    case 1: return Cutter::make(CutterType::Flat, 3);
-    default: return Cutter::make(CutterType::Bull, 3, 1);
+    case 0:
+      return Cutter::make(CutterType::Ball, 3);
+    case 1:
+      return Cutter::make(CutterType::Flat, 3);
+    default:
+      return Cutter::make(CutterType::Bull, 3, 1);
   }
 }
-const char* typeName(int type) { return type == 0 ? "ball" : type == 1 ? "flat" : "bull"; }
+const char* typeName(int type) {
+  return type == 0 ? "ball" : type == 1 ? "flat" : "bull";
+}
 
 // Axis: vertical, or the B1 lead of 5 deg plus a 3 deg tilt (a general 5-axis pose).
-Vec3 axisOf(bool tilted) { return tilted ? leadTiltAxis({1, 0, 0}, 5, 3) : Vec3{0, 0, 1}; }
+Vec3 axisOf(bool tilted) {
+  return tilted ? leadTiltAxis({1, 0, 0}, 5, 3) : Vec3{0, 0, 1};
+}
 
 // Query points over the footprint of a 10 mm move along x from the origin. "swept":
 // x inside the move, so most answers come from the envelope; "endpoint": x behind the
@@ -97,7 +104,8 @@ void BM_SceneBuild(benchmark::State& state) {
     benchmark::DoNotOptimize(scene.stats().tiles);
   }
   state.SetItemsProcessed(state.iterations() * int64_t(segments.size()));
-  state.SetLabel(std::string(name) + "-like, 4 x 4 mm, " + std::to_string(segments.size()) + " segments");
+  state.SetLabel(std::string(name) + "-like, 4 x 4 mm, " + std::to_string(segments.size()) +
+                 " segments");
 }
 BENCHMARK(BM_SceneBuild)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
@@ -115,7 +123,8 @@ void BM_Cast(benchmark::State& state) {
     evaluations += castZMap(scene, map).exactEvaluations;
   }
   state.SetItemsProcessed(state.iterations() * b.grid.cells());
-  state.counters["evals_per_cell"] = double(evaluations) / double(state.iterations() * b.grid.cells());
+  state.counters["evals_per_cell"] =
+      double(evaluations) / double(state.iterations() * b.grid.cells());
   state.SetLabel(std::string(name) + "-like, 4 x 4 mm, cells/s");
 }
 BENCHMARK(BM_Cast)->DenseRange(1, 3)->Unit(benchmark::kMillisecond)->UseRealTime();

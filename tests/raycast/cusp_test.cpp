@@ -5,8 +5,8 @@
 
 #include "analysis/scallop_profile.h"
 #include "raycast/simulation.h"
-#include "sweep/raster.h"
 #include "sweep/brute_force_reference.h"
+#include "sweep/raster.h"
 
 namespace scallop {
 namespace {
@@ -106,7 +106,8 @@ TEST(Cusp, BullWithLeadMatchesBruteForce) {
       if (profile.position[n] <= k.stepOver) lowest = std::min(lowest, profile.height[n]);
     const double cusp = cuspHeight(profile, 0, k.stepOver, lowest);
     const double tol = k.tiltDeg == 0 ? 1e-4 : 1e-3;  // tilted: the cusp falls between cells
-    EXPECT_NEAR(cusp, refCusp, tol) << "R=" << k.R << " lead=" << k.leadDeg << " tilt=" << k.tiltDeg;
+    EXPECT_NEAR(cusp, refCusp, tol)
+        << "R=" << k.R << " lead=" << k.leadDeg << " tilt=" << k.tiltDeg;
   }
 }
 

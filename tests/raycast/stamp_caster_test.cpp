@@ -1,6 +1,8 @@
 // The stamping baseline against the exact pipeline: never below it (stamps are subsets
 // of the swept solid), within 1e-4 mm of it at the derived step, and independent of
 // the number of threads.
+#include "raycast/stamp_caster.h"
+
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
@@ -8,7 +10,6 @@
 #include <cmath>
 
 #include "raycast/simulation.h"
-#include "raycast/stamp_caster.h"
 #include "sweep/raster.h"
 #include "tools/bench_cases.h"
 
@@ -44,8 +45,10 @@ void expectStampedWithinTolerance(const Cutter& cutter, const ToolPath& path, co
 
 TEST(StampCaster, StepFollowsTheCurvatureOfTheLowerBoundary) {
   const Vec3 z{0, 0, 1};
-  EXPECT_NEAR(stampStepFor(Cutter::make(CutterType::Ball, 3), z, 1e-4), 0.5 * std::sqrt(8e-4 * 3), 1e-15);
-  EXPECT_NEAR(stampStepFor(Cutter::make(CutterType::Bull, 3, 1), z, 1e-4), 0.5 * std::sqrt(8e-4), 1e-15);
+  EXPECT_NEAR(stampStepFor(Cutter::make(CutterType::Ball, 3), z, 1e-4), 0.5 * std::sqrt(8e-4 * 3),
+              1e-15);
+  EXPECT_NEAR(stampStepFor(Cutter::make(CutterType::Bull, 3, 1), z, 1e-4), 0.5 * std::sqrt(8e-4),
+              1e-15);
   // A tilted flat cutter's heel is a sharp edge: the error grows linearly with the step.
   const Vec3 tilted = leadTiltAxis({1, 0, 0}, 5, 0);
   EXPECT_NEAR(stampStepFor(Cutter::make(CutterType::Flat, 3), tilted, 1e-4),
@@ -98,8 +101,10 @@ TEST(StampCaster, ResultDoesNotDependOnThreads) {
   StampOptions options;
   options.tileCells = 8;  // several tiles, so both threads take some
   StampSimulationResult one, two;
-  tbb::task_arena(1).execute([&] { one = simulateStamped(cutter, path, stock, grid, {}, options); });
-  tbb::task_arena(2).execute([&] { two = simulateStamped(cutter, path, stock, grid, {}, options); });
+  tbb::task_arena(1).execute(
+      [&] { one = simulateStamped(cutter, path, stock, grid, {}, options); });
+  tbb::task_arena(2).execute(
+      [&] { two = simulateStamped(cutter, path, stock, grid, {}, options); });
   EXPECT_EQ(heightsHash(one.map), heightsHash(two.map));
   EXPECT_EQ(one.stamp.exactEvaluations, two.stamp.exactEvaluations);
 }

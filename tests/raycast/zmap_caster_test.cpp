@@ -1,11 +1,12 @@
 // The z-map caster: region queries, memos and threads change the speed, never a bit.
+#include "raycast/zmap_caster.h"
+
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
 
 #include "raycast/simulation.h"
-#include "raycast/zmap_caster.h"
 #include "sweep/raster.h"
 #include "sweep/tool_path_sweep.h"
 
@@ -39,11 +40,14 @@ Fixture freeformFixture() {
   f.stock.extend({4, 3, 0});
   // Each move holds the (leaned) surface normal of its midpoint as its axis, as a 5-axis
   // post-processor's linear moves do; the axis jumps between moves.
-  auto tipAt = [](double x, double y) { return Vec3{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)}; };
+  auto tipAt = [](double x, double y) {
+    return Vec3{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)};
+  };
   for (double y = -0.5; y <= 3.5; y += 0.9) {
     for (int k = 0; k < 60; ++k) {
       const double xa = -3.5 + 0.18 * k, xb = xa + 0.18, xm = 0.5 * (xa + xb);
-      const Vec3 normal = normalize(Vec3{-0.2 * std::cos(xm) * std::cos(y), 0.2 * std::sin(xm) * std::sin(y), 1});
+      const Vec3 normal =
+          normalize(Vec3{-0.2 * std::cos(xm) * std::cos(y), 0.2 * std::sin(xm) * std::sin(y), 1});
       const Vec3 axis = normalize(normal + Vec3{0.08, 0, 0});
       f.path.moves.push_back(Move{{tipAt(xa, y), axis}, {tipAt(xb, y), axis}, false});
     }
@@ -53,7 +57,8 @@ Fixture freeformFixture() {
 
 ZMap cast(const Fixture& f, double spacing, int64_t regionCells, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-  const GridSpec grid = gridCovering(f.stock.min.x, f.stock.min.y, f.stock.max.x, f.stock.max.y, spacing);
+  const GridSpec grid =
+      gridCovering(f.stock.min.x, f.stock.min.y, f.stock.max.x, f.stock.max.y, spacing);
   SimulationOptions options;
   options.cast.regionCells = regionCells;
   return simulate(f.cutter, f.path, f.stock, grid, options).map;

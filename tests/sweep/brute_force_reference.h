@@ -46,8 +46,7 @@ double profile(const RefCutter& c, double s);
 // Point-in-solid test straight from the definition, for the cutter with its tip at
 // `tip` and unit axis `axis`. `tol` (mm) widens the solid: s in [-tol, L + tol] and
 // rho <= prof(clamp(s)) + tol.
-bool inside(const RefCutter& c, const Vec3& tip, const Vec3& axis, const Vec3& p,
-            double tol = 0);
+bool inside(const RefCutter& c, const Vec3& tip, const Vec3& axis, const Vec3& p, double tol = 0);
 
 struct RefHit {
   bool hit = false;
@@ -55,36 +54,34 @@ struct RefHit {
 };
 
 // Lowest point of the stationary cutter (tip at `tip`) on the vertical line (x, y).
-RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x,
-                        double y);
+RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y);
 
 // Lowest point on the vertical line (x, y) of the solid swept by the cutter whose tip
 // moves straight from `start` to `end` with the fixed unit axis `axis`.
-RefHit sweptLowest(const RefCutter& c, const Vec3& start, const Vec3& end,
-                   const Vec3& axis, double x, double y);
+RefHit sweptLowest(const RefCutter& c, const Vec3& start, const Vec3& end, const Vec3& axis,
+                   double x, double y);
 
 struct RefMove {
   Vec3 start, end, axis;
 };
 
 // Lowest point of the union of the swept solids of several moves (min over moves).
-RefHit unionLowest(const RefCutter& c, const std::vector<RefMove>& moves, double x,
-                   double y);
+RefHit unionLowest(const RefCutter& c, const std::vector<RefMove>& moves, double x, double y);
 
 // Support value of the stationary cutter (tip at origin): max over the solid of
 // dot(dir, q). `dir` need not be unit.
 double supportValue(const RefCutter& c, const Vec3& axis, const Vec3& dir);
 
 // Support value of the swept solid: the move adds max(dot(dir, start), dot(dir, end)).
-double sweptSupportValue(const RefCutter& c, const Vec3& start, const Vec3& end,
-                         const Vec3& axis, const Vec3& dir);
+double sweptSupportValue(const RefCutter& c, const Vec3& start, const Vec3& end, const Vec3& axis,
+                         const Vec3& dir);
 
 // Cusp (scallop) height between passes: along the horizontal segment from (x0, y0) to
 // (x1, y1), the highest lowest-point of the union of `moves` minus the lowest one.
 // Dense sampling followed by golden-section refinement at both extremes. Returns a
 // negative value if some sample misses the union (the segment is not fully cut).
-double cuspHeight(const RefCutter& c, const std::vector<RefMove>& moves, double x0,
-                  double y0, double x1, double y1, int samples = 2001);
+double cuspHeight(const RefCutter& c, const std::vector<RefMove>& moves, double x0, double y0,
+                  double x1, double y1, int samples = 2001);
 
 }  // namespace ref
 }  // namespace scallop

@@ -40,11 +40,19 @@ std::pair<double, double> goldenMax(F&& f, double a, double b) {
   // test, when the probes stop being distinct doubles.
   for (int i = 0; i < 200 && b - a > 1e-15 * (1 + std::fabs(a) + std::fabs(b)); ++i) {
     if (f1 >= f2) {
-      b = x2; x2 = x1; f2 = f1;
-      x1 = b - g * (b - a); f1 = f(x1); consider(x1, f1);
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - g * (b - a);
+      f1 = f(x1);
+      consider(x1, f1);
     } else {
-      a = x1; x1 = x2; f1 = f2;
-      x2 = a + g * (b - a); f2 = f(x2); consider(x2, f2);
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + g * (b - a);
+      f2 = f(x2);
+      consider(x2, f2);
     }
   }
   return best;
@@ -64,11 +72,13 @@ double bisect(P&& pred, double in, double out) {
 
 // Every point of the cutter lies within sqrt(L^2 + R^2) of its tip; H bounds the z
 // search with a margin.
-double reach(const RefCutter& c) { return std::sqrt(c.L * c.L + c.R * c.R) + 1; }
+double reach(const RefCutter& c) {
+  return std::sqrt(c.L * c.L + c.R * c.R) + 1;
+}
 
 // The z interval on the vertical line (x, y) where 0 <= s <= L, clipped to the reach.
-bool zDomain(const RefCutter& c, const Vec3& tip, const Vec3& a, double x, double y,
-             double& lo, double& hi) {
+bool zDomain(const RefCutter& c, const Vec3& tip, const Vec3& a, double x, double y, double& lo,
+             double& hi) {
   const double H = reach(c);
   const double cxy = (x - tip.x) * a.x + (y - tip.y) * a.y;  // s at z = tip.z
   if (a.z == 0) {
@@ -86,8 +96,7 @@ bool zDomain(const RefCutter& c, const Vec3& tip, const Vec3& a, double x, doubl
 
 // depth = prof(s) - rho at (x, y, z); >= 0 means inside. Only called inside the z
 // domain, where 0 <= s <= L up to rounding; the clamp absorbs that rounding.
-double depthAt(const RefCutter& c, const Vec3& tip, const Vec3& a, double x, double y,
-               double z) {
+double depthAt(const RefCutter& c, const Vec3& tip, const Vec3& a, double x, double y, double z) {
   const Vec3 q{x - tip.x, y - tip.y, z - tip.z};
   const double s = dot(q, a);
   const double rho = length(q - a * s);
@@ -126,8 +135,7 @@ RefHit lowestFrom(const RefCutter& c, const Vec3& tip, const Vec3& a, double x, 
 
 }  // namespace
 
-RefCutter makeRefCutter(CutterType type, double radius, double cornerRadius,
-                        double fluteLength) {
+RefCutter makeRefCutter(CutterType type, double radius, double cornerRadius, double fluteLength) {
   RefCutter c;
   c.R = radius;
   c.r = type == CutterType::Ball ? radius : type == CutterType::Flat ? 0 : cornerRadius;
@@ -140,8 +148,7 @@ double profile(const RefCutter& c, double s) {
   return c.R;
 }
 
-bool inside(const RefCutter& c, const Vec3& tip, const Vec3& axis, const Vec3& p,
-            double tol) {
+bool inside(const RefCutter& c, const Vec3& tip, const Vec3& axis, const Vec3& p, double tol) {
   const Vec3 q = p - tip;
   const double s = dot(q, axis);
   if (s < -tol || s > c.L + tol) return false;
@@ -149,13 +156,12 @@ bool inside(const RefCutter& c, const Vec3& tip, const Vec3& axis, const Vec3& p
   return rho <= profile(c, std::min(std::max(s, 0.0), c.L)) + tol;
 }
 
-RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x,
-                        double y) {
+RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y) {
   return lowestFrom(c, tip, axis, x, y, deepest(c, tip, axis, x, y));
 }
 
-RefHit sweptLowest(const RefCutter& c, const Vec3& start, const Vec3& end,
-                   const Vec3& axis, double x, double y) {
+RefHit sweptLowest(const RefCutter& c, const Vec3& start, const Vec3& end, const Vec3& axis,
+                   double x, double y) {
   const Vec3 d = end - start;
   auto tipAt = [&](double t) { return start + d * t; };
   // Positions t whose z domain is non-empty: with c(t) = s at z = tip.z, the domain is
@@ -192,7 +198,10 @@ RefHit sweptLowest(const RefCutter& c, const Vec3& start, const Vec3& end,
   for (int i = 0; i < n; ++i) {
     const double t = i == n - 1 ? tb : ta + (tb - ta) * i / (n - 1);
     const double z = F(t);
-    if (z < bestZ) { bestZ = z; bestI = i; }
+    if (z < bestZ) {
+      bestZ = z;
+      bestI = i;
+    }
   }
   const double lo = ta + (tb - ta) * std::max(0, bestI - 1) / (n - 1);
   const double hi = bestI + 1 >= n - 1 ? tb : ta + (tb - ta) * (bestI + 1) / (n - 1);
@@ -203,8 +212,7 @@ RefHit sweptLowest(const RefCutter& c, const Vec3& start, const Vec3& end,
   return h;
 }
 
-RefHit unionLowest(const RefCutter& c, const std::vector<RefMove>& moves, double x,
-                   double y) {
+RefHit unionLowest(const RefCutter& c, const std::vector<RefMove>& moves, double x, double y) {
   RefHit best;
   for (const RefMove& mv : moves) {
     const RefHit h = sweptLowest(c, mv.start, mv.end, mv.axis, x, y);
@@ -221,13 +229,13 @@ double supportValue(const RefCutter& c, const Vec3& axis, const Vec3& dir) {
   return goldenMax([&](double s) { return na * s + np * profile(c, s); }, 0.0, c.L).second;
 }
 
-double sweptSupportValue(const RefCutter& c, const Vec3& start, const Vec3& end,
-                         const Vec3& axis, const Vec3& dir) {
+double sweptSupportValue(const RefCutter& c, const Vec3& start, const Vec3& end, const Vec3& axis,
+                         const Vec3& dir) {
   return std::max(dot(dir, start), dot(dir, end)) + supportValue(c, axis, dir);
 }
 
-double cuspHeight(const RefCutter& c, const std::vector<RefMove>& moves, double x0,
-                  double y0, double x1, double y1, int samples) {
+double cuspHeight(const RefCutter& c, const std::vector<RefMove>& moves, double x0, double y0,
+                  double x1, double y1, int samples) {
   auto f = [&](double u) {
     const RefHit h = unionLowest(c, moves, x0 + (x1 - x0) * u, y0 + (y1 - y0) * u);
     return h.hit ? h.z : kInf;
@@ -245,8 +253,8 @@ double cuspHeight(const RefCutter& c, const std::vector<RefMove>& moves, double 
   };
   const auto bmax = bracket(iMax), bmin = bracket(iMin);
   const double top = std::max(z[iMax], goldenMax(f, bmax.first, bmax.second).second);
-  const double bottom =
-      std::min(z[iMin], -goldenMax([&](double u) { return -f(u); }, bmin.first, bmin.second).second);
+  const double bottom = std::min(
+      z[iMin], -goldenMax([&](double u) { return -f(u); }, bmin.first, bmin.second).second);
   return top - bottom;
 }
 
@@ -377,8 +385,9 @@ TEST(BruteForceReference, StationaryAgreesWithDumbScan) {
     const double R = 0.5 + 4 * U(rng), r = R * (0.05 + 0.9 * U(rng));
     const RefCutter c = makeRefCutter(type, R, r, R * (1 + 4 * U(rng)));
     const double th = 1.5707963267948966 * U(rng), ph = 6.283185307179586 * U(rng);
-    const Vec3 a = i % 10 == 0 ? Vec3{std::cos(ph), std::sin(ph), 0}
-                               : Vec3{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+    const Vec3 a =
+        i % 10 == 0 ? Vec3{std::cos(ph), std::sin(ph), 0}
+                    : Vec3{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
     // Aim near the axis's shadow so that most lines hit.
     const Vec3 on = a * (c.L * U(rng));
     const double x = on.x + (2 * U(rng) - 1) * 1.2 * R, y = on.y + (2 * U(rng) - 1) * 1.2 * R;
@@ -386,7 +395,10 @@ TEST(BruteForceReference, StationaryAgreesWithDumbScan) {
     const double H = std::sqrt(c.L * c.L + R * R), step = 1e-4;
     double first = HUGE_VAL;
     for (double z = -H; z <= H; z += step)
-      if (inside(c, {0, 0, 0}, a, {x, y, z})) { first = z; break; }
+      if (inside(c, {0, 0, 0}, a, {x, y, z})) {
+        first = z;
+        break;
+      }
     if (!std::isfinite(first)) {
       EXPECT_FALSE(h.hit && inside(c, {0, 0, 0}, a, {x, y, h.z + step / 2}, 1e-12))
           << "reference hit where the scan found nothing with a thick chord";

@@ -102,7 +102,8 @@ TEST(Cutter, ParseType) {
     EXPECT_EQ(parseCutterType(toString(t)), t);
   expectRejected([] { parseCutterType("torus"); }, "tool.type", "torus");
   expectRejected([] { parseCutterType(""); }, "tool.type", "empty");
-  expectRejected([] { parseCutterType("endmill", "job.tool.type"); }, "job.tool.type", "custom field");
+  expectRejected([] { parseCutterType("endmill", "job.tool.type"); }, "job.tool.type",
+                 "custom field");
 }
 
 // ---- cutterSupport ---------------------------------------------------------------
@@ -121,17 +122,26 @@ TEST(Cutter, SupportPointIsTheExtremePointOfTheSolid) {
     const ref::RefCutter rc = ref::makeRefCutter(type, R, r, L);
     const double th = i % 5 == 0 ? 0 : i % 5 == 1 ? pi / 2 : pi / 2 * U(rng);
     const double ph = 2 * pi * U(rng);
-    const Vec3 axis = th == 0 ? Vec3{0, 0, 1}
+    const Vec3 axis = th == 0      ? Vec3{0, 0, 1}
                       : i % 5 == 1 ? Vec3{std::cos(ph), std::sin(ph), 0}
-                                   : normalize(Vec3{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)});
+                                   : normalize(Vec3{std::sin(th) * std::cos(ph),
+                                                    std::sin(th) * std::sin(ph), std::cos(th)});
     // Directions: random, and the axis-aligned and straight-down ones that hit the flat
     // end faces and edges head-on. Scaled by up to 10: dir need not be unit.
     Vec3 dir;
     switch (i % 6) {
-      case 0: dir = Vec3{0, 0, -1}; break;
-      case 1: dir = axis * -2.0; break;
-      case 2: dir = axis * 0.5; break;
-      default: dir = Vec3{U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5} * (0.1 + 10 * U(rng)); break;
+      case 0:
+        dir = Vec3{0, 0, -1};
+        break;
+      case 1:
+        dir = axis * -2.0;
+        break;
+      case 2:
+        dir = axis * 0.5;
+        break;
+      default:
+        dir = Vec3{U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5} * (0.1 + 10 * U(rng));
+        break;
     }
     const Vec3 p = cutterSupport(cutter, axis, dir);
     ASSERT_TRUE(isFinite(p)) << "case " << i;

@@ -1,9 +1,10 @@
+#include "sweep/raster.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "sweep/input_error.h"
-#include "sweep/raster.h"
 #include "sweep/swept_segment.h"
 
 namespace scallop {

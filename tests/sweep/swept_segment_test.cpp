@@ -176,12 +176,13 @@ struct Case {
 };
 
 void describe(const Case& k, double x, double y, double refZ, bool refHit, const LowestPoint& got) {
-  std::printf("  REPRO cutter=%s R=%.17g r=%.17g L=%.17g axis=(%.17g, %.17g, %.17g)\n"
-              "        start=(%.17g, %.17g, %.17g) end=(%.17g, %.17g, %.17g)\n"
-              "        x=%.17g y=%.17g  reference %s z=%.17g  got %s z=%.17g\n",
-              toString(k.type), k.R, k.r, k.L, k.axis.x, k.axis.y, k.axis.z, k.start.x,
-              k.start.y, k.start.z, k.end.x, k.end.y, k.end.z, x, y, refHit ? "hit" : "miss",
-              refZ, got.hit ? "hit" : "miss", got.z);
+  std::printf(
+      "  REPRO cutter=%s R=%.17g r=%.17g L=%.17g axis=(%.17g, %.17g, %.17g)\n"
+      "        start=(%.17g, %.17g, %.17g) end=(%.17g, %.17g, %.17g)\n"
+      "        x=%.17g y=%.17g  reference %s z=%.17g  got %s z=%.17g\n",
+      toString(k.type), k.R, k.r, k.L, k.axis.x, k.axis.y, k.axis.z, k.start.x, k.start.y,
+      k.start.z, k.end.x, k.end.y, k.end.z, x, y, refHit ? "hit" : "miss", refZ,
+      got.hit ? "hit" : "miss", got.z);
 }
 
 Case randomCase(std::mt19937_64& rng, int i) {
@@ -189,33 +190,60 @@ Case randomCase(std::mt19937_64& rng, int i) {
   Case k;
   k.type = CutterType(i % 3);
   k.R = 0.5 + 7.5 * U(rng);
-  k.r = k.type == CutterType::Ball ? k.R : k.type == CutterType::Flat ? 0 : k.R * (0.02 + 0.96 * U(rng));
+  k.r = k.type == CutterType::Ball   ? k.R
+        : k.type == CutterType::Flat ? 0
+                                     : k.R * (0.02 + 0.96 * U(rng));
   k.L = (i / 3) % 2 ? 0 : k.R * (1 + 5 * U(rng));  // 0: the default 4 R
   const double ph = 2 * kPi * U(rng);
   double th = 0;
   switch ((i / 6) % 5) {
-    case 0: th = 0; break;                                  // exactly vertical
-    case 1: th = kPi / 2; break;                            // exactly horizontal
-    case 2: th = kPi / 2 * U(rng); break;                   // anywhere in between
-    case 3: th = kPi / 18 * U(rng); break;                  // small lead/tilt
-    default: th = kPi / 2 * (1 - 0.05 * U(rng)); break;     // nearly horizontal
+    case 0:
+      th = 0;
+      break;  // exactly vertical
+    case 1:
+      th = kPi / 2;
+      break;  // exactly horizontal
+    case 2:
+      th = kPi / 2 * U(rng);
+      break;  // anywhere in between
+    case 3:
+      th = kPi / 18 * U(rng);
+      break;  // small lead/tilt
+    default:
+      th = kPi / 2 * (1 - 0.05 * U(rng));
+      break;  // nearly horizontal
   }
-  k.axis = th == 0 ? kUp
-                   : th == kPi / 2 ? Vec3{std::cos(ph), std::sin(ph), 0}
-                                   : normalize(Vec3{std::sin(th) * std::cos(ph),
-                                                    std::sin(th) * std::sin(ph), std::cos(th)});
+  k.axis =
+      th == 0 ? kUp
+      : th == kPi / 2
+          ? Vec3{std::cos(ph), std::sin(ph), 0}
+          : normalize(Vec3{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)});
   k.start = {20 * U(rng) - 10, 20 * U(rng) - 10, 10 * U(rng) - 5};
   const double len = U(rng) < 0.15 ? 1e-3 * U(rng) : 20 * U(rng);
   const double mph = 2 * kPi * U(rng);
   Vec3 d;
   switch ((i / 30) % 7) {
-    case 0: d = {0, 0, 0}; break;                                               // zero length
-    case 1: d = {0, 0, -len}; break;                                            // plunge down
-    case 2: d = {0, 0, len}; break;                                             // retract up
-    case 3: d = Vec3{std::cos(mph), std::sin(mph), 0} * len; break;             // level feed
-    case 4: d = normalize(Vec3{std::cos(mph), std::sin(mph), 2 * U(rng) - 1}) * len; break;  // ramp
-    case 5: d = k.axis * (U(rng) < 0.5 ? -len : len); break;                     // along the axis
-    default: d = normalize(Vec3{U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5}) * len; break;
+    case 0:
+      d = {0, 0, 0};
+      break;  // zero length
+    case 1:
+      d = {0, 0, -len};
+      break;  // plunge down
+    case 2:
+      d = {0, 0, len};
+      break;  // retract up
+    case 3:
+      d = Vec3{std::cos(mph), std::sin(mph), 0} * len;
+      break;  // level feed
+    case 4:
+      d = normalize(Vec3{std::cos(mph), std::sin(mph), 2 * U(rng) - 1}) * len;
+      break;  // ramp
+    case 5:
+      d = k.axis * (U(rng) < 0.5 ? -len : len);
+      break;  // along the axis
+    default:
+      d = normalize(Vec3{U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5}) * len;
+      break;
   }
   k.end = k.start + d;
   return k;
@@ -236,7 +264,9 @@ TEST(SweptSegment, RandomCasesAgreeWithBruteForce) {
     const Cutter cutter = Cutter::make(k.type, k.R, k.r, k.L);
     const ref::RefCutter rc = refOf(k.type, k.R, k.r, k.L);
     const SweptSegment seg(cutter, k.start, k.end, k.axis);
-    const auto box = [&](const Vec3& dir) { return ref::sweptSupportValue(rc, k.start, k.end, k.axis, dir); };
+    const auto box = [&](const Vec3& dir) {
+      return ref::sweptSupportValue(rc, k.start, k.end, k.axis, dir);
+    };
     const double x0 = -box({-1, 0, 0}), x1 = box({1, 0, 0});
     const double y0 = -box({0, -1, 0}), y1 = box({0, 1, 0});
 
@@ -246,13 +276,16 @@ TEST(SweptSegment, RandomCasesAgreeWithBruteForce) {
       queries.push_back({c.x + k.R * (2.2 * U(rng) - 1.1), c.y + k.R * (2.2 * U(rng) - 1.1)});
     }
     for (int q = 0; q < 2; ++q) {  // anywhere in the footprint's box and a bit beyond
-      queries.push_back({x0 + (x1 - x0) * (1.1 * U(rng) - 0.05), y0 + (y1 - y0) * (1.1 * U(rng) - 0.05)});
+      queries.push_back(
+          {x0 + (x1 - x0) * (1.1 * U(rng) - 0.05), y0 + (y1 - y0) * (1.1 * U(rng) - 0.05)});
     }
     if (i % 3 == 0) {  // just inside and just outside the silhouette, 1e-5 mm away
       const Vec3 c = k.start + (k.end - k.start) * U(rng) + k.axis * (rc.L * U(rng));
       const double ang = 2 * kPi * U(rng), far = (x1 - x0) + (y1 - y0);
       const double ux = std::cos(ang), uy = std::sin(ang);
-      auto in = [&](double u) { return ref::sweptLowest(rc, k.start, k.end, k.axis, c.x + u * ux, c.y + u * uy).hit; };
+      auto in = [&](double u) {
+        return ref::sweptLowest(rc, k.start, k.end, k.axis, c.x + u * ux, c.y + u * uy).hit;
+      };
       if (in(0)) {
         double a = 0, b = far;
         for (int it = 0; it < 40; ++it) ((in((a + b) / 2)) ? a : b) = (a + b) / 2;
@@ -272,14 +305,22 @@ TEST(SweptSegment, RandomCasesAgreeWithBruteForce) {
         bool ambiguous = false;
         for (const auto& o : {std::make_pair(1e-6, 0.0), std::make_pair(-1e-6, 0.0),
                               std::make_pair(0.0, 1e-6), std::make_pair(0.0, -1e-6)})
-          ambiguous |= ref::sweptLowest(rc, k.start, k.end, k.axis, x + o.first, y + o.second).hit != want.hit;
-        if (ambiguous) { ++skipped; continue; }
+          ambiguous |=
+              ref::sweptLowest(rc, k.start, k.end, k.axis, x + o.first, y + o.second).hit !=
+              want.hit;
+        if (ambiguous) {
+          ++skipped;
+          continue;
+        }
         ++failures;
         ADD_FAILURE() << "case " << i << ": lowestPoint disagrees with the reference";
         describe(k, x, y, want.z, want.hit, got);
         continue;
       }
-      if (!want.hit) { ++misses; continue; }
+      if (!want.hit) {
+        ++misses;
+        continue;
+      }
       ++hits;
       worst = std::max(worst, std::fabs(want.z - got.z));
 
@@ -287,7 +328,10 @@ TEST(SweptSegment, RandomCasesAgreeWithBruteForce) {
       // max over the solid of dot(n, P) must not exceed dot(n, lowest point).
       const Vec3 n = got.normal;
       EXPECT_NEAR(length(n), 1, 1e-9) << "case " << i;
-      if (n.z >= 0) { ++upNormals; continue; }
+      if (n.z >= 0) {
+        ++upNormals;
+        continue;
+      }
       const Vec3 p{x, y, got.z};
       const double excess = ref::sweptSupportValue(rc, k.start, k.end, k.axis, n) - dot(n, p);
       ++supportChecks;
@@ -306,16 +350,18 @@ TEST(SweptSegment, RandomCasesAgreeWithBruteForce) {
         const ref::RefHit other = ref::sweptLowest(rc, k.start, k.end, k.axis, xo, yo);
         if (other.hit) {
           const double plane = got.z - (n.x * (xo - x) + n.y * (yo - y)) / n.z;
-          EXPECT_GE(other.z, plane - kSupportTol) << "case " << i << " at (" << xo << ", " << yo << ")";
+          EXPECT_GE(other.z, plane - kSupportTol)
+              << "case " << i << " at (" << xo << ", " << yo << ")";
         }
       }
     }
   }
-  std::printf("SweptSegment random: %d hits, %d misses, %d ambiguous skipped, %d failures;"
-              " worst |dz| %.3g mm\n  normals: %d support checks, worst excess %.3g mm,"
-              " %d hits with normal.z >= 0\n",
-              hits, misses, skipped, failures, worst, supportChecks, worstSupport, upNormals);
-  EXPECT_GT(hits, kCases);        // the generator must really exercise the hit path
+  std::printf(
+      "SweptSegment random: %d hits, %d misses, %d ambiguous skipped, %d failures;"
+      " worst |dz| %.3g mm\n  normals: %d support checks, worst excess %.3g mm,"
+      " %d hits with normal.z >= 0\n",
+      hits, misses, skipped, failures, worst, supportChecks, worstSupport, upNormals);
+  EXPECT_GT(hits, kCases);  // the generator must really exercise the hit path
   EXPECT_GT(misses, kCases / 20);
   EXPECT_LT(skipped, kCases / 20);
 }
@@ -338,8 +384,12 @@ TEST(SweptSegment, CutterLowestPointAgreesWithBruteForce) {
       bool ambiguous = false;
       for (const auto& o : {std::make_pair(1e-6, 0.0), std::make_pair(-1e-6, 0.0),
                             std::make_pair(0.0, 1e-6), std::make_pair(0.0, -1e-6)})
-        ambiguous |= ref::stationaryLowest(rc, {0, 0, 0}, k.axis, x + o.first, y + o.second).hit != want.hit;
-      if (ambiguous) { ++skipped; continue; }
+        ambiguous |=
+            ref::stationaryLowest(rc, {0, 0, 0}, k.axis, x + o.first, y + o.second).hit != want.hit;
+      if (ambiguous) {
+        ++skipped;
+        continue;
+      }
       ADD_FAILURE() << "cutterLowestPoint disagrees (tip at the origin)";
       describe(k, x, y, want.z, want.hit, got);
       continue;
@@ -350,8 +400,8 @@ TEST(SweptSegment, CutterLowestPointAgreesWithBruteForce) {
       EXPECT_NEAR(length(got.normal), 1, 1e-9);
     }
   }
-  std::printf("cutterLowestPoint random: %d hits, %d ambiguous skipped, worst |dz| %.3g mm\n",
-              hits, skipped, worst);
+  std::printf("cutterLowestPoint random: %d hits, %d ambiguous skipped, worst |dz| %.3g mm\n", hits,
+              skipped, worst);
   EXPECT_GT(hits, 1000);
   EXPECT_LT(skipped, 30);
 }
@@ -362,15 +412,20 @@ TEST(SweptSegment, BoundsContainTheSolidTightly) {
   for (int i = 0; i < 120; ++i) {
     const Case k = randomCase(rng, (i * 7) % 210);
     const ref::RefCutter rc = refOf(k.type, k.R, k.r, k.L);
-    const Box3 b = SweptSegment(Cutter::make(k.type, k.R, k.r, k.L), k.start, k.end, k.axis).bounds();
-    const auto sup = [&](const Vec3& dir) { return ref::sweptSupportValue(rc, k.start, k.end, k.axis, dir); };
+    const Box3 b =
+        SweptSegment(Cutter::make(k.type, k.R, k.r, k.L), k.start, k.end, k.axis).bounds();
+    const auto sup = [&](const Vec3& dir) {
+      return ref::sweptSupportValue(rc, k.start, k.end, k.axis, dir);
+    };
     const double want[6] = {-sup({-1, 0, 0}), -sup({0, -1, 0}), -sup({0, 0, -1}),
-                            sup({1, 0, 0}), sup({0, 1, 0}), sup({0, 0, 1})};
+                            sup({1, 0, 0}),   sup({0, 1, 0}),   sup({0, 0, 1})};
     const double got[6] = {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
     for (int j = 0; j < 6; ++j) {
       // Containment is what correctness needs; 1e-9 of rounding allowance.
-      if (j < 3) EXPECT_LE(got[j], want[j] + 1e-9) << "case " << i << " face " << j;
-      else EXPECT_GE(got[j], want[j] - 1e-9) << "case " << i << " face " << j;
+      if (j < 3)
+        EXPECT_LE(got[j], want[j] + 1e-9) << "case " << i << " face " << j;
+      else
+        EXPECT_GE(got[j], want[j] - 1e-9) << "case " << i << " face " << j;
       EXPECT_NEAR(got[j], want[j], kTol) << "case " << i << " face " << j << " is not tight";
     }
   }

@@ -1,12 +1,13 @@
 // From tool paths to swept segments: rapids dropped, collinear moves merged exactly,
 // turning axes subdivided within the stated tolerance.
+#include "sweep/tool_path_sweep.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "sweep/input_error.h"
-#include "sweep/tool_path_sweep.h"
 
 namespace scallop {
 namespace {

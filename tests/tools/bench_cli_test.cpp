@@ -1,10 +1,10 @@
 // `scallop bench`: runs, prints the documented JSON keys, and its heights are those of
 // a direct simulate() call, bit for bit.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdio>
-#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 #include <string>
 

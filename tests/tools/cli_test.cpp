@@ -5,62 +5,25 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
+#include "tools/cli_harness.h"
 #include "tools/height_images.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
+using scallop::test::CliRun;
+using scallop::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public scallop::test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("scallop-cli-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(SCALLOP_BINARY) + " " + args + " >" + out.string() +
-                            " 2>" + err.string();
-    const int raw = std::system(cmd.c_str());
-    CliRun r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-
   // A small valid job; `edit` patches it before writing.
   fs::path job(const std::function<void(nlohmann::json&)>& edit = {}) {
     nlohmann::json j = nlohmann::json::parse(R"({
@@ -80,13 +43,12 @@ class Cli : public ::testing::Test {
     fs::remove_all(out);
     const CliRun r = run("simulate " + jobFile.string() + " -o " + out.string());
     EXPECT_EQ(r.status, status) << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos) << "message does not name " << needle << ": " << r.err;
+    EXPECT_NE(r.err.find(needle), std::string::npos)
+        << "message does not name " << needle << ": " << r.err;
     const bool empty = !fs::exists(out) || fs::is_empty(out);
     EXPECT_TRUE(empty) << "a failed run left files in " << out;
     EXPECT_TRUE(r.out.empty()) << r.out;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(Cli, HelpTeachesEveryOptionWithUnits) {
@@ -107,11 +69,14 @@ TEST_F(Cli, UsageErrorsExitTwo) {
 }
 
 TEST_F(Cli, MalformedJsonNamesFileAndLine) {
-  const fs::path p = write("broken.json", "{\n  \"tool\": {\"type\": \"ball\",\n  \"radius\": }\n}\n");
+  const fs::path p =
+      write("broken.json", "{\n  \"tool\": {\"type\": \"ball\",\n  \"radius\": }\n}\n");
   expectRejected(p, "broken.json:3:");
 }
 
-TEST_F(Cli, MissingFileIsBadInput) { expectRejected(dir_ / "nope.json", "nope.json"); }
+TEST_F(Cli, MissingFileIsBadInput) {
+  expectRejected(dir_ / "nope.json", "nope.json");
+}
 
 TEST_F(Cli, MissingAndUnknownKeysAreNamed) {
   expectRejected(job([](nlohmann::json& j) { j.erase("grid"); }), "grid");
@@ -123,7 +88,8 @@ TEST_F(Cli, MissingAndUnknownKeysAreNamed) {
 }
 
 TEST_F(Cli, BadCutterParametersAreNamed) {
-  expectRejected(job([](nlohmann::json& j) { j["tool"]["corner_radius"] = 3.0; }), "tool.corner_radius");
+  expectRejected(job([](nlohmann::json& j) { j["tool"]["corner_radius"] = 3.0; }),
+                 "tool.corner_radius");
   expectRejected(job([](nlohmann::json& j) { j["tool"]["radius"] = -1; }), "tool.radius");
   expectRejected(job([](nlohmann::json& j) { j["tool"]["type"] = "drill"; }), "tool.type");
   expectRejected(job([](nlohmann::json& j) { j["path"]["raster"]["lead_deg"] = 95; }),
@@ -151,7 +117,8 @@ TEST_F(Cli, SimulateWritesEveryOutputAndTheReportDescribesThem) {
   const fs::path out = dir_ / "out";
   fs::create_directories(out);
   std::ofstream(out / "keep.txt") << "mine";
-  const CliRun r = run("simulate " + job().string() + " -o " + out.string() + " --json --threads 2");
+  const CliRun r =
+      run("simulate " + job().string() + " -o " + out.string() + " --json --threads 2");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json report = nlohmann::json::parse(r.out);  // stdout is exactly the JSON
   EXPECT_EQ(report, nlohmann::json::parse(slurp(out / "report.json")));
@@ -172,7 +139,8 @@ TEST_F(Cli, SimulateWritesEveryOutputAndTheReportDescribesThem) {
   EXPECT_GE(minHeight, -0.3 - 1e-12);
   EXPECT_LT(minHeight, -0.3 + 1e-4);
   EXPECT_NEAR(map.minHeight(), minHeight, 1e-7);  // float32 in the file
-  const std::string stats = "oiiotool --stats " + (out / "heights.exr").string() + " >/dev/null 2>&1";
+  const std::string stats =
+      "oiiotool --stats " + (out / "heights.exr").string() + " >/dev/null 2>&1";
   EXPECT_EQ(std::system(stats.c_str()), 0);
 }
 

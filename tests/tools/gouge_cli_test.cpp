@@ -11,46 +11,16 @@
 #include <sstream>
 #include <string>
 
+#include "tools/cli_harness.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliResult {
-  int status = -1;
-  std::string out, err;
-};
+using CliResult = scallop::test::CliRun;
+using scallop::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class GougeCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("scallop-gouge-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(SCALLOP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int raw = std::system(cmd.c_str());
-    CliResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
-};
+class GougeCli : public scallop::test::CliFixture {};
 
 TEST_F(GougeCli, HelpNamesOptionsAndUnits) {
   const CliResult s = run("surface --help");
@@ -59,15 +29,18 @@ TEST_F(GougeCli, HelpNamesOptionsAndUnits) {
     EXPECT_NE(s.out.find(w), std::string::npos) << w;
   const CliResult g = run("gouge --help");
   EXPECT_EQ(g.status, 0);
-  for (const char* w : {"--radius", "--length", "--slice-spacing", "--postures", "--json", "--threads", "mm", "deg"})
+  for (const char* w : {"--radius", "--length", "--slice-spacing", "--postures", "--json",
+                        "--threads", "mm", "deg"})
     EXPECT_NE(g.out.find(w), std::string::npos) << w;
 }
 
 TEST_F(GougeCli, PlaneIsFullyMachinableWithJsonAndCsv) {
-  const CliResult s = run("surface --shape plane --size 40 30 --facets 600 -o " + path("plane.stl"));
+  const CliResult s =
+      run("surface --shape plane --size 40 30 --facets 600 -o " + path("plane.stl"));
   ASSERT_EQ(s.status, 0) << s.err;
-  const CliResult g = run("gouge " + path("plane.stl") + " --radius 3 --length 10 --json --postures " +
-                    path("p.csv") + " -o " + path("out"));
+  const CliResult g =
+      run("gouge " + path("plane.stl") + " --radius 3 --length 10 --json --postures " +
+          path("p.csv") + " -o " + path("out"));
   ASSERT_EQ(g.status, 0) << g.err;
   const nlohmann::json j = nlohmann::json::parse(g.out);  // stdout is one JSON document
   const int n = j["cc_points"].get<int>();
@@ -85,8 +58,8 @@ TEST_F(GougeCli, PlaneIsFullyMachinableWithJsonAndCsv) {
   std::istringstream csv(slurp(path("p.csv")));
   std::string line;
   std::getline(csv, line);
-  for (const char* col : {"cc_x", "normal_z", "feed_x", "tip_x", "axis_z", "inclination_deg", "reversed",
-                          "vertex_test", "exact_depth_mm"})
+  for (const char* col : {"cc_x", "normal_z", "feed_x", "tip_x", "axis_z", "inclination_deg",
+                          "reversed", "vertex_test", "exact_depth_mm"})
     EXPECT_NE(line.find(col), std::string::npos) << col;
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
@@ -97,9 +70,11 @@ TEST_F(GougeCli, PlaneIsFullyMachinableWithJsonAndCsv) {
 
 TEST_F(GougeCli, AsciiSurfaceGivesTheSameAnswer) {
   ASSERT_EQ(run("surface --shape wave --size 30 30 --facets 800 -o " + path("b.stl")).status, 0);
-  ASSERT_EQ(run("surface --shape wave --size 30 30 --facets 800 --ascii -o " + path("a.stl")).status, 0);
+  ASSERT_EQ(
+      run("surface --shape wave --size 30 30 --facets 800 --ascii -o " + path("a.stl")).status, 0);
   const std::string opts = " --radius 2 --length 6 --no-map --json";
-  const CliResult b = run("gouge " + path("b.stl") + opts), a = run("gouge " + path("a.stl") + opts);
+  const CliResult b = run("gouge " + path("b.stl") + opts),
+                  a = run("gouge " + path("a.stl") + opts);
   ASSERT_EQ(b.status, 0) << b.err;
   ASSERT_EQ(a.status, 0) << a.err;
   auto jb = nlohmann::json::parse(b.out), ja = nlohmann::json::parse(a.out);

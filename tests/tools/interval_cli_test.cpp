@@ -18,6 +18,7 @@
 
 #include "analysis/path_interval.h"
 #include "analysis/simulated_interval.h"
+#include "tools/cli_harness.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -27,41 +28,11 @@ namespace {
 
 constexpr double kThreeDecimals = 0.0005 + 1e-12;  // half a unit of the printed digit
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
+using scallop::test::CliRun;
+using scallop::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class IntervalCli : public ::testing::Test {
+class IntervalCli : public scallop::test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("scallop-interval-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(SCALLOP_BINARY) + " " + args + " >" + out.string() +
-                            " 2>" + err.string();
-    const int raw = std::system(cmd.c_str());
-    CliRun r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
   json runJson(const std::string& args) {
     const CliRun r = run("interval " + args + " --json");
     EXPECT_EQ(r.status, 0) << r.err;
@@ -71,12 +42,10 @@ class IntervalCli : public ::testing::Test {
   void expectRejected(const std::string& args, const std::string& needle, int status) {
     const CliRun r = run("interval " + args);
     EXPECT_EQ(r.status, status) << args << "\n" << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos) << args << ": message does not name "
-                                                     << needle << ": " << r.err;
+    EXPECT_NE(r.err.find(needle), std::string::npos)
+        << args << ": message does not name " << needle << ": " << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
   }
-
-  fs::path dir_;
 };
 
 const json& procedure(const json& doc, const std::string& name) {
@@ -143,7 +112,8 @@ TEST_F(IntervalCli, InclinedFlatEndMillIsTheEllipse) {
 }
 
 TEST_F(IntervalCli, TiltReportsBothSidesAndLeavesTheBullProceduresOut) {
-  const json doc = runJson("--tool bull --radius 3 --corner-radius 1 --lead 5 --tilt 7 --scallop 0.05");
+  const json doc =
+      runJson("--tool bull --radius 3 --corner-radius 1 --lead 5 --tilt 7 --scallop 0.05");
   const double plus = doc["simulated_half_interval_plus"].get<double>();
   const double minus = doc["simulated_half_interval_minus"].get<double>();
   EXPECT_NEAR(doc["simulated_half_interval"].get<double>(), 0.5 * (plus + minus), 1e-12);
@@ -158,8 +128,8 @@ TEST_F(IntervalCli, TiltReportsBothSidesAndLeavesTheBullProceduresOut) {
 TEST_F(IntervalCli, TableForPeople) {
   const CliRun r = run("interval --tool bull --radius 6 --corner-radius 2 --lead 10 --scallop 0.1");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* word : {"simulated exact L/2", "computational", "sekine", "redonnet", "bedi",
-                           "not applicable"})
+  for (const char* word :
+       {"simulated exact L/2", "computational", "sekine", "redonnet", "bedi", "not applicable"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
   const CliRun help = run("interval --help");
   EXPECT_EQ(help.status, 0);
@@ -260,8 +230,8 @@ TEST_F(IntervalCli, ValidateWritesTablesAndPictures) {
       const double printed = num(row, "printed_half_interval_mm");
       const double computed = num(row, "computed_half_interval_mm");
       const double h = num(row, "h_mm");
-      EXPECT_NEAR(num(row, "scallop_error_um"), 1000 * (num(row, "simulated_scallop_at_printed_mm") - h),
-                  1e-6);
+      EXPECT_NEAR(num(row, "scallop_error_um"),
+                  1000 * (num(row, "simulated_scallop_at_printed_mm") - h), 1e-6);
       if (row.at("procedure") == "computational") {
         EXPECT_GE(computed + kThreeDecimals, printed) << file;
         EXPECT_LT(computed - printed, 0.014) << file;

@@ -20,8 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // A binary STL built byte by byte (independent of writeStl).
-std::string binaryStl(const std::vector<std::array<float, 9>>& tris, const std::string& header = "test",
-                      int64_t declared = -1) {
+std::string binaryStl(const std::vector<std::array<float, 9>>& tris,
+                      const std::string& header = "test", int64_t declared = -1) {
   std::string s = header;
   s.resize(80, ' ');
   const uint32_t n = declared < 0 ? uint32_t(tris.size()) : uint32_t(declared);
@@ -35,7 +35,8 @@ std::string binaryStl(const std::vector<std::array<float, 9>>& tris, const std::
   return s;
 }
 
-const std::vector<std::array<float, 9>> kSquare = {{0, 0, 0, 1, 0, 0, 1, 1, 0}, {0, 0, 0, 1, 1, 0, 0, 1, 0}};
+const std::vector<std::array<float, 9>> kSquare = {{0, 0, 0, 1, 0, 0, 1, 1, 0},
+                                                   {0, 0, 0, 1, 1, 0, 0, 1, 0}};
 
 std::string errorOf(const std::string& bytes) {
   try {
@@ -57,7 +58,8 @@ TEST(Stl, BinaryIsDetectedEvenWhenTheHeaderSaysSolid) {
 
 TEST(Stl, AsciiIsParsedAndWelded) {
   const std::string text =
-      "solid sq\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 1 0\n"
+      "solid sq\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 "
+      "1 0\n"
       "  endloop\n endfacet\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 1 0\n"
       "   vertex 0 1 0\n  endloop\n endfacet\nendsolid sq\n";
   StlFormat f;
@@ -100,9 +102,12 @@ TEST(Stl, NonFiniteCoordinatesAreNamed) {
 }
 
 TEST(Stl, MalformedAsciiNamesTheLine) {
-  std::string e = errorOf("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\nvertex 1 1 0\n");
+  std::string e =
+      errorOf("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\nvertex 1 1 0\n");
   EXPECT_NE(e.find("part.stl:6"), std::string::npos) << e;  // 'vertex' read as the missing z
-  e = errorOf("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 2 2 2\n");
+  e = errorOf(
+      "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 2 "
+      "2 2\n");
   EXPECT_NE(e.find("part.stl:7"), std::string::npos) << e;
   EXPECT_NE(e.find("exactly 3 vertices"), std::string::npos) << e;
   e = errorOf("solid x\nfacet normal 0 0 1\nouter loop\n");
