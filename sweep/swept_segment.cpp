@@ -168,6 +168,16 @@ SweptSegment::SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& 
     n_ = normalize(Vec3{sigma_ * uHat_.x, sigma_ * uHat_.y, -1});
     lowM_ = cutterSupport(cutter_, axis_, -m_);
     highM_ = cutterSupport(cutter_, axis_, m_);
+    // Section roots at evenly spaced offsets across K (see section()).
+    const double cMin = dot(lowM_, m_), cMax = dot(highM_, m_);
+    nodes_[0] = {-1, lowM_};
+    nodes_[kSectionNodes - 1] = {1, highM_};
+    for (int k = 1; k + 1 < kSectionNodes; ++k) {
+      const double c = cMin + (cMax - cMin) * k / (kSectionNodes - 1);
+      double root = 0;
+      const Section sec = search(c, -1, lowM_, 1, highM_, 0, &root);
+      nodes_[size_t(k)] = {root, sec.point};
+    }
   }
 }
 
@@ -189,20 +199,18 @@ double SweptSegment::support(const Vec3& dir) const {
   return dot(dir, start_ + cutterSupport(cutter_, axis_, dir)) + std::max(0.0, dot(dir, d));
 }
 
-SweptSegment::Section SweptSegment::section(double c) const {
+SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double th2, Vec3 x2,
+                                           double th, double* root) const {
   // Step 3: the support point of S = K n P in direction n = sigma u_hat - z_hat, where
   // P is the plane at offset c along m. Directions n cos(theta) + m sin(theta), theta
   // in [-pi/2, pi/2], are parametrised without trigonometry by t = tan(theta / 2) in
   // [-1, 1]: (1 - t^2) n + 2 t m points the same way, and support points do not depend
-  // on a direction's length.
+  // on a direction's length. [th1, th2] brackets the root, th is the first guess.
   const Vec3& n = n_;
   const Vec3& m = m_;
   auto direction = [&](double t) { return n * (1 - t * t) + m * (2 * t); };
   Section out;
-  double th1 = -1, th2 = 1;
-  Vec3 x1 = lowM_, x2 = highM_;
   double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
-  if (f1 > 0 || f2 < 0) return out;  // P misses K, so l misses C
 
   // Root of the monotone f(t) = x_K(t) . m - c by Newton's method with the analytic
   // slope of the support point, safeguarded by the bracket [th1, th2] (as in
@@ -210,9 +218,6 @@ SweptSegment::Section SweptSegment::section(double c) const {
   // or a step that does not at least halve the previous one falls back to bisection, so
   // jumps of the support point (flat faces) are still found.
   const double tol = 1e-14 * (cutter_.radius + cutter_.fluteLength);
-  // Start where a ball of radius R would put the root: sin(theta) = c / R.
-  const double s0 = std::clamp(c / cutter_.radius, -0.999, 0.999);
-  double th = s0 / (1 + std::sqrt(1 - s0 * s0));  // tan(theta / 2)
   double stepBefore = th2 - th1;
   for (int iter = 0; iter < 200 && th2 - th1 > 1e-16; ++iter) {
     const Vec3 v = direction(th);
@@ -239,6 +244,7 @@ SweptSegment::Section SweptSegment::section(double c) const {
       out.hit = true;
       out.point = sw.point - m * fm;
       out.normal = normalize(v);
+      if (root) *root = th;
       return out;
     }
     stepBefore = step;
@@ -251,7 +257,25 @@ SweptSegment::Section SweptSegment::section(double c) const {
   out.hit = true;
   out.point = x1 + (x2 - x1) * lam;
   out.normal = normalize(direction(0.5 * (th1 + th2)));
+  if (root) *root = 0.5 * (th1 + th2);
   return out;
+}
+
+SweptSegment::Section SweptSegment::section(double c) const {
+  const double cMin = dot(lowM_, m_), cMax = dot(highM_, m_);
+  if (c < cMin || c > cMax) return {};  // P misses K, so l misses C
+  // The nodes (built with the segment) bracket the root between two neighbours and give
+  // a first guess by linear interpolation; Newton then needs about three steps. The
+  // nodes depend only on the segment, so the result is a function of c alone.
+  const double u = (c - cMin) / (cMax - cMin) * (kSectionNodes - 1);
+  const int k = std::clamp(int(u), 0, kSectionNodes - 2);
+  const SectionNode& a = nodes_[size_t(k)];
+  const SectionNode& b = nodes_[size_t(k + 1)];
+  if (dot(a.point, m_) - c <= 0 && dot(b.point, m_) - c >= 0) {
+    const double guess = a.t + (u - k) * (b.t - a.t);
+    return search(c, a.t, a.point, b.t, b.point, std::clamp(guess, a.t, b.t), nullptr);
+  }
+  return search(c, -1, lowM_, 1, highM_, 0, nullptr);
 }
 
 LowestPoint SweptSegment::lowestPoint(double x, double y) const {

@@ -5,6 +5,8 @@
 // height function F(x, y). F is evaluated exactly in double: see swept_segment.cpp.
 #pragma once
 
+#include <array>
+
 #include "sweep/cutter.h"
 #include "sweep/vec3.h"
 
@@ -67,6 +69,10 @@ class SweptSegment {
 
  private:
   Section section(double offset) const;
+  // The safeguarded Newton search of step 3 in [th1, th2] from th; `root` gets the
+  // parameter of the answer when not null.
+  Section search(double offset, double th1, Vec3 x1, double th2, Vec3 x2, double th,
+                 double* root) const;
 
   Cutter cutter_;
   Vec3 start_, end_, axis_, delta_;
@@ -74,6 +80,13 @@ class SweptSegment {
   // plane normal m_, slope sigma_, the search direction n_, and K's extremes along m_.
   double w_ = 0, sigma_ = 0;
   Vec3 uHat_, m_, n_, lowM_, highM_;
+  // Section roots (parameter and support point) at evenly spaced offsets across K.
+  static constexpr int kSectionNodes = 9;
+  struct SectionNode {
+    double t = 0;
+    Vec3 point;
+  };
+  std::array<SectionNode, kSectionNodes> nodes_{};
 };
 
 // Support point of the stationary cutter (tip at origin, unit axis `axis`) in
