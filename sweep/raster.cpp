@@ -49,6 +49,12 @@ ToolPath makeRaster(const Cutter& cutter, const Box3& stock, const RasterSpec& s
   if (passes > 1e6)
     throw InputError(f + "step_over", "gives " + std::to_string(passes) + " passes; too many");
   const double floorZ = stock.max.z - spec.depth;
+  // Every move is kept in memory: refuse a path that could not be held, up front.
+  const double movesPerPass =
+      spec.segmentLength > 0 ? std::ceil((feedMax - feedMin) / spec.segmentLength) : 1;
+  if (movesPerPass * passes > 5e7)
+    throw InputError(f + "segment_length", "gives " + std::to_string(movesPerPass * passes) +
+                                               " moves; at most 5e7 are supported");
 
   ToolPath path;
   for (int k = 0; k < int(passes); ++k) {

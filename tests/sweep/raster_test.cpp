@@ -60,6 +60,15 @@ TEST(Raster, RejectsBadFieldsByName) {
   spec.stepOver = 1;
   spec.leadDeg = 90;
   EXPECT_THROW(makeRaster(ball, stock, spec), InputError);
+  // Absurdly many moves are refused rather than exhausting memory.
+  spec.leadDeg = 0;
+  spec.segmentLength = 1e-9;
+  try {
+    makeRaster(ball, stock, spec);
+    FAIL() << "1e12 moves accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("path.raster.segment_length"), std::string::npos);
+  }
 }
 
 }  // namespace
