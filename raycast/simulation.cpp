@@ -2,19 +2,24 @@
 
 namespace scallop {
 
-SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,
-                          const GridSpec& grid, const SimulationOptions& options) {
+std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
+                                       const Box3& stock, double spacing,
+                                       const SimulationOptions& options) {
   SceneOptions sceneOptions;
   sceneOptions.tileSize = options.tileSize;
   sceneOptions.stockTop = stock.max.z;
   // Candidate regions of options.cast.regionCells cells a side (zmap_caster.cpp).
-  sceneOptions.regionHalfSize = 0.5 * double(options.cast.regionCells - 1) * grid.spacing;
-  const SweptScene scene(sweepToolPath(cutter, path, options.sweep), sceneOptions);
+  sceneOptions.regionHalfSize = 0.5 * double(options.cast.regionCells - 1) * spacing;
+  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.sweep), sceneOptions);
+}
 
+SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                          const GridSpec& grid, const SimulationOptions& options) {
+  const std::unique_ptr<SweptScene> scene = buildScene(cutter, path, stock, grid.spacing, options);
   SimulationResult result;
   result.map = ZMap(grid, stock.max.z);
-  result.cast = castZMap(scene, result.map, options.cast);
-  result.scene = scene.stats();
+  result.cast = castZMap(*scene, result.map, options.cast);
+  result.scene = scene->stats();
   return result;
 }
 

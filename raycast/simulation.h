@@ -1,6 +1,8 @@
 // simulate(): tool path -> swept segments -> scene -> z-map, the whole exact pipeline.
 #pragma once
 
+#include <memory>
+
 #include "raycast/swept_scene.h"
 #include "raycast/zmap.h"
 #include "raycast/zmap_caster.h"
@@ -21,6 +23,12 @@ struct SimulationResult {
   SceneStats scene;
   CastStats cast;
 };
+
+// The culling scene of `path` for a grid of cells of side `spacing` (mm): built once,
+// it serves any number of sub-grids (bands of a map too large to hold).
+std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
+                                       const Box3& stock, double spacing,
+                                       const SimulationOptions& options = {});
 
 // Heights of `stock` (its top is the initial height) after `path`, on `grid`.
 SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,

@@ -16,10 +16,21 @@ struct GridSpec {
   double originX = 0, originY = 0;  // the grid's minimum corner (stock.min x, y), mm
   double spacing = 0;               // cell side, mm
   int64_t nx = 0, ny = 0;
+  // Index of this grid's cell (0, 0) in a larger grid with the same origin: a band of
+  // a map too large to hold. Centres are computed from the full grid's indices, so a
+  // band's cells are bit for bit the full grid's (shifting the origin would round).
+  int64_t offsetI = 0, offsetJ = 0;
 
   int64_t cells() const { return nx * ny; }
-  double cellCentreX(int64_t i) const { return originX + (double(i) + 0.5) * spacing; }
-  double cellCentreY(int64_t j) const { return originY + (double(j) + 0.5) * spacing; }
+  double cellCentreX(int64_t i) const { return originX + (double(offsetI + i) + 0.5) * spacing; }
+  double cellCentreY(int64_t j) const { return originY + (double(offsetJ + j) + 0.5) * spacing; }
+  // Rows [j0, j1) of this grid, full width.
+  GridSpec rows(int64_t j0, int64_t j1) const {
+    GridSpec g = *this;
+    g.offsetJ += j0;
+    g.ny = j1 - j0;
+    return g;
+  }
 };
 
 // Grid over [minX, maxX] x [minY, maxY] with cells of side `spacing`:

@@ -30,5 +30,6 @@ Command addGougeCommand(CLI::App& parent, CommonOptions& common);
 Command addIntervalCommand(CLI::App& parent, CommonOptions& common);
 Command addValidateCommand(CLI::App& parent, CommonOptions& common);
 Command addBenchCommand(CLI::App& parent, CommonOptions& common);
+Command addMergeCommand(CLI::App& parent, CommonOptions& common);
 
 }  // namespace scallop

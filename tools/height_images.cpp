@@ -126,20 +126,50 @@ double metresPerUnit(const std::string& path, const std::string& key, const std:
                    fmt::format("header field {} = '{}': expected m, mm, um or nm", key, unit));
 }
 
-}  // namespace
+constexpr double kMetrePerMm = 1e-3;
 
-void writeHeightsExr(const ZMap& map, const std::string& path) {
-  checkWritable(map, path);
-  const GridSpec& g = map.grid();
-  const int width = int(g.nx), height = int(g.ny);
-
-  OIIO::ImageSpec spec(width, height, 1, OIIO::TypeDesc::FLOAT);
+OIIO::ImageSpec exrSpec(const GridSpec& g) {
+  OIIO::ImageSpec spec(int(g.nx), int(g.ny), 1, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"Z"};
   spec.attribute("compression", "zip");
   spec.attribute("ImageDescription", describeGrid(g));
   spec.attribute(kOriginX, OIIO::TypeDesc::DOUBLE, &g.originX);
   spec.attribute(kOriginY, OIIO::TypeDesc::DOUBLE, &g.originY);
   spec.attribute(kSpacing, OIIO::TypeDesc::DOUBLE, &g.spacing);
+  return spec;
+}
+
+std::string gsfHeader(const GridSpec& g, const std::string& title) {
+  // Numbers use fmt's shortest representation that reads back to the same double
+  // (as exact as "%.17g", without its noise digits: 0.000875, not 0.00087500000000000002).
+  std::string header = kGsfMagic;
+  header += fmt::format("XRes = {}\nYRes = {}\n", g.nx, g.ny);
+  header += fmt::format("XReal = {}\nYReal = {}\n", double(g.nx) * g.spacing * kMetrePerMm,
+                        double(g.ny) * g.spacing * kMetrePerMm);
+  header +=
+      fmt::format("XOffset = {}\nYOffset = {}\n", g.originX * kMetrePerMm, g.originY * kMetrePerMm);
+  header += "XYUnits = m\nZUnits = m\n";
+  header += "Title = " + oneLine(title) + "\n";
+  // 1 to 4 NULs: at least one terminates the text even when it is already aligned.
+  header.append(4 - header.size() % 4, '\0');
+  return header;
+}
+
+// Image row `row` of `map` (0 = its largest y) in metres, little-endian float32.
+void writeGsfRow(const ZMap& map, int64_t row, std::vector<unsigned char>& bytes,
+                 std::ofstream& out) {
+  std::vector<float> values(size_t(map.nx()));
+  imageRow(map, row, kMetrePerMm, values.data());
+  for (size_t i = 0; i < values.size(); ++i) putFloatLE(values[i], &bytes[4 * i]);
+  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+}  // namespace
+
+void writeHeightsExr(const ZMap& map, const std::string& path) {
+  checkWritable(map, path);
+  const GridSpec& g = map.grid();
+  const OIIO::ImageSpec spec = exrSpec(g);
 
   writeFileAtomically(path, [&](const std::string& temp) {
     // The format is named explicitly: the temporary name has no ".exr" extension.
@@ -188,33 +218,15 @@ ZMap readHeightsExr(const std::string& path) {
 void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string& title) {
   checkWritable(map, path);
   const GridSpec& g = map.grid();
-  constexpr double kMetrePerMm = 1e-3;
-
-  // Numbers use fmt's shortest representation that reads back to the same double
-  // (as exact as "%.17g", without its noise digits: 0.000875, not 0.00087500000000000002).
-  std::string header = kGsfMagic;
-  header += fmt::format("XRes = {}\nYRes = {}\n", g.nx, g.ny);
-  header += fmt::format("XReal = {}\nYReal = {}\n", double(g.nx) * g.spacing * kMetrePerMm,
-                        double(g.ny) * g.spacing * kMetrePerMm);
-  header +=
-      fmt::format("XOffset = {}\nYOffset = {}\n", g.originX * kMetrePerMm, g.originY * kMetrePerMm);
-  header += "XYUnits = m\nZUnits = m\n";
-  header += "Title = " + oneLine(title) + "\n";
-  // 1 to 4 NULs: at least one terminates the text even when it is already aligned.
-  header.append(4 - header.size() % 4, '\0');
+  const std::string header = gsfHeader(g, title);
 
   writeFileAtomically(path, [&](const std::string& temp) {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out)
       throw InputError(path, "cannot open for writing: " + std::string(std::strerror(errno)));
     out.write(header.data(), std::streamsize(header.size()));
-    std::vector<float> row(size_t(g.nx));
-    std::vector<unsigned char> bytes(row.size() * 4);
-    for (int64_t r = 0; r < g.ny && out; ++r) {
-      imageRow(map, r, kMetrePerMm, row.data());
-      for (size_t i = 0; i < row.size(); ++i) putFloatLE(row[i], &bytes[4 * i]);
-      out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    }
+    std::vector<unsigned char> bytes(size_t(g.nx) * 4);
+    for (int64_t r = 0; r < g.ny && out; ++r) writeGsfRow(map, r, bytes, out);
     out.close();
     if (!out) throw InputError(path, "cannot write: " + std::string(std::strerror(errno)));
   });
@@ -286,6 +298,77 @@ ZMap readHeightsGsf(const std::string& path) {
     for (int64_t i = 0; i < g.nx; ++i, p += 4)
       map.at(i, g.ny - 1 - row) = double(getFloatLE(p)) * zScale;
   return map;
+}
+
+struct HeightStreamWriter::Impl {
+  GridSpec grid;
+  int tileHeight = 0;
+  int64_t rowsWritten = 0;  // image rows, from the top
+  AtomicFile exrFile, gsfFile;
+  std::unique_ptr<OIIO::ImageOutput> exr;
+  std::ofstream gsf;
+  std::vector<float> tiles;  // one band of float32 heights, image row order
+  std::vector<unsigned char> gsfRow;
+
+  [[noreturn]] void failExr() const {
+    throw InputError(exrFile.path(), "cannot write OpenEXR: " + exr->geterror());
+  }
+};
+
+HeightStreamWriter::HeightStreamWriter(const GridSpec& grid, const std::string& exrPath,
+                                       const std::string& gsfPath, const std::string& title,
+                                       int tileHeight)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  if (grid.nx <= 0 || grid.ny <= 0 || grid.nx > INT32_MAX || grid.ny > INT32_MAX)
+    throw InputError(
+        exrPath, fmt::format("a height map of {} x {} cells cannot be an image", grid.nx, grid.ny));
+  m.grid = grid;
+  m.tileHeight = std::max(1, tileHeight);
+  OIIO::ImageSpec spec = exrSpec(grid);
+  spec.tile_width = int(std::min<int64_t>(256, grid.nx));
+  spec.tile_height = m.tileHeight;
+  spec.tile_depth = 1;
+  // The format is named explicitly: the temporary name has no ".exr" extension.
+  m.exr = OIIO::ImageOutput::create("openexr");
+  if (!m.exr) throw InputError(exrPath, "OpenEXR writer unavailable: " + OIIO::geterror());
+  if (!m.exr->open(m.exrFile.open(exrPath), spec)) m.failExr();
+  m.gsf.open(m.gsfFile.open(gsfPath), std::ios::binary | std::ios::trunc);
+  const std::string header = gsfHeader(grid, title);
+  m.gsf.write(header.data(), std::streamsize(header.size()));
+  if (!m.gsf) throw InputError(gsfPath, "cannot write: " + std::string(std::strerror(errno)));
+  m.gsfRow.resize(size_t(grid.nx) * 4);
+}
+
+HeightStreamWriter::~HeightStreamWriter() = default;
+
+void HeightStreamWriter::append(const ZMap& band) {
+  Impl& m = *impl_;
+  const int64_t rows = band.ny(), r0 = m.rowsWritten, r1 = r0 + rows;
+  if (band.nx() != m.grid.nx || r1 > m.grid.ny || band.grid().offsetJ != m.grid.ny - r1 ||
+      (r1 < m.grid.ny && rows % m.tileHeight != 0))
+    throw InputError(m.exrFile.path(), "internal: band does not continue the image");
+  m.tiles.resize(size_t(rows * band.nx()));
+  for (int64_t r = 0; r < rows; ++r) imageRow(band, r, 1.0, m.tiles.data() + r * band.nx());
+  if (!m.exr->write_tiles(0, int(band.nx()), int(r0), int(r1), 0, 1, OIIO::TypeDesc::FLOAT,
+                          m.tiles.data()))
+    m.failExr();
+  for (int64_t r = 0; r < rows && m.gsf; ++r) writeGsfRow(band, r, m.gsfRow, m.gsf);
+  if (!m.gsf)
+    throw InputError(m.gsfFile.path(), "cannot write: " + std::string(std::strerror(errno)));
+  m.rowsWritten = r1;
+}
+
+void HeightStreamWriter::close() {
+  Impl& m = *impl_;
+  if (m.rowsWritten != m.grid.ny)
+    throw InputError(m.exrFile.path(), "internal: closed before every row was written");
+  if (!m.exr->close()) m.failExr();
+  m.gsf.close();
+  if (!m.gsf)
+    throw InputError(m.gsfFile.path(), "cannot write: " + std::string(std::strerror(errno)));
+  m.exrFile.commit();
+  m.gsfFile.commit();
 }
 
 }  // namespace scallop

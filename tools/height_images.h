@@ -25,6 +25,8 @@
 //              scale bar. Not meant to be read back.
 #pragma once
 
+#include <cmath>
+#include <memory>
 #include <string>
 
 #include "raycast/zmap.h"
@@ -41,12 +43,39 @@ struct PreviewOptions {
   int minPixels = 400;
   // Drawn above the map with the built-in font (letters are shown upper-case).
   std::string title;
+  // Colour-bar range, mm; NaN: the map's own. A min-pooled reduction of a map too
+  // large to hold passes the full map's range so its picture matches the in-memory one.
+  double zMin = NAN, zMax = NAN;
 };
 
 void writeHeightsExr(const ZMap& map, const std::string& path);
 void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string& title);
 void writePreviewPng(const ZMap& map, const std::string& path,
                      const PreviewOptions& options = PreviewOptions());
+
+// Streams heights.exr and heights.gsf for a map too large to hold, band by band from
+// the top (image row 0, the largest y) down. The EXR is tiled (tileHeight rows of
+// 256 columns), so each band but the last must have a multiple of tileHeight rows.
+// Both files are temporary until close() renames them into place; an exception or
+// destruction before that leaves nothing behind.
+class HeightStreamWriter {
+ public:
+  HeightStreamWriter(const GridSpec& grid, const std::string& exrPath, const std::string& gsfPath,
+                     const std::string& title, int tileHeight);
+  ~HeightStreamWriter();
+  HeightStreamWriter(const HeightStreamWriter&) = delete;
+  HeightStreamWriter& operator=(const HeightStreamWriter&) = delete;
+
+  // The next band: rows grid.rows(j0, j1) of the full grid (ZMap order, j = 0 at the
+  // band's smallest y) directly below the rows written so far.
+  void append(const ZMap& band);
+  void close();
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
 
 // Read back what the writers above produce (also any single-channel float image or
 // GSF with the same metadata). The GridSpec comes from the metadata: for GSF,

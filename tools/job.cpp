@@ -164,7 +164,7 @@ void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
   }
 }
 
-Job parseJob(const std::string& textIn, const std::string& source) {
+Job parseJob(const std::string& textIn, const std::string& source, bool checkMemory) {
   json doc;
   try {
     doc = json::parse(textIn);
@@ -198,7 +198,7 @@ Job parseJob(const std::string& textIn, const std::string& source) {
     const double nx = std::ceil((job.stock.max.x - job.stock.min.x) / job.spacing);
     const double ny = std::ceil((job.stock.max.y - job.stock.min.y) / job.spacing);
     if (nx * ny > 9e15) throw InputError("grid.spacing", "gives more cells than can be counted");
-    checkGridFitsMemory(job.grid(), "grid.spacing");
+    if (checkMemory) checkGridFitsMemory(job.grid(), "grid.spacing");
 
     if (doc.contains("sweep")) {
       const json& sweep = requireObject(doc, "sweep", "sweep");
@@ -232,12 +232,12 @@ Job parseJob(const std::string& textIn, const std::string& source) {
   }
 }
 
-Job loadJobFile(const std::string& path) {
+Job loadJobFile(const std::string& path, bool checkMemory) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the job file");
   std::ostringstream text;
   text << in.rdbuf();
-  return parseJob(text.str(), path);
+  return parseJob(text.str(), path, checkMemory);
 }
 
 json jobToJson(const Job& job) {

@@ -32,9 +32,10 @@ struct Job {
 const char* defaultJobJson();
 
 // Parses and validates; `source` names the file in messages and resolves relative
-// tool-path files. Throws InputError.
-Job parseJob(const std::string& text, const std::string& source);
-Job loadJobFile(const std::string& path);
+// tool-path files. Throws InputError. Without `checkMemory` a grid too large to hold is
+// accepted (the caller computes it in bands, tools/tiled_simulation.h).
+Job parseJob(const std::string& text, const std::string& source, bool checkMemory = true);
+Job loadJobFile(const std::string& path, bool checkMemory = true);
 
 // Refuses grids whose heights would not fit in memory, naming the size they need.
 void checkGridFitsMemory(const GridSpec& grid, const std::string& field);

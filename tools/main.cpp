@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   commands.push_back(scallop::addIntervalCommand(app, common));
   commands.push_back(scallop::addValidateCommand(app, common));
   commands.push_back(scallop::addBenchCommand(app, common));
+  commands.push_back(scallop::addMergeCommand(app, common));
 
   try {
     app.parse(argc, argv);

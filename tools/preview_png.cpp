@@ -317,7 +317,8 @@ void writePreviewPng(const ZMap& map, const std::string& path, const PreviewOpti
   const int up =
       std::max(1, std::min((options.minPixels + gridLong - 1) / gridLong, maxPixels / gridLong));
   const std::vector<double> light = hillShade(grid);
-  const double zmin = map.minHeight(), zmax = map.maxHeight();
+  const double zmin = std::isnan(options.zMin) ? map.minHeight() : options.zMin;
+  const double zmax = std::isnan(options.zMax) ? map.maxHeight() : options.zMax;
   const double range = zmax - zmin;
 
   // Layout, px.

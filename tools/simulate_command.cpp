@@ -21,6 +21,7 @@
 #include "tools/height_images.h"
 #include "tools/job.h"
 #include "tools/progress.h"
+#include "tools/tiled_simulation.h"
 
 namespace scallop {
 
@@ -31,6 +32,8 @@ namespace {
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+}  // namespace
 
 // For a raster: the highest point left above the floor between the first and the last
 // pass (where both neighbours have cut), i.e. the largest scallop on the map, mm.
@@ -56,16 +59,20 @@ json rasterMeasurements(const Job& job, const ZMap& map) {
   return m;
 }
 
-}  // namespace
-
 int runSimulate(const SimulateArgs& args) {
   const auto tStart = std::chrono::steady_clock::now();
-  Job job = args.jobFile.empty() ? parseJob(defaultJobJson(), "built-in default job")
-                                 : loadJobFile(args.jobFile);
+  // A grid too large to hold is computed in bands instead (tools/tiled_simulation.h).
+  const bool exact = args.method == "exact";
+  Job job = args.jobFile.empty() ? parseJob(defaultJobJson(), "built-in default job", !exact)
+                                 : loadJobFile(args.jobFile, !exact);
   // Fail before the long computation, not after it.
   ensureWritableDirectory(args.outDir);
 
   const GridSpec grid = job.grid();
+  if (!exact && (args.tiled || args.tileRows > 0 || !args.bands.empty()))
+    throw InputError("--method", "bands (--tiled, --tile-rows, --bands) need --method exact");
+  if (args.tiled || args.tileRows > 0 || !args.bands.empty()) return runTiledSimulate(args, job);
+  if (exact && !gridFitsMemory(job, args.outDir)) return runTiledSimulate(args, job);
   if (!args.json)
     std::fprintf(stderr,
                  "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
@@ -200,6 +207,15 @@ Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
                   "the cutter stamped along each move at a step whose scallop is <= 1e-4 mm")
       ->check(CLI::IsMember({"exact", "stamp"}))
       ->capture_default_str();
+  app->add_flag("--tiled", args->tiled,
+                "Compute and write the map in bands of rows with bounded memory (tiled\n"
+                "OpenEXR, streamed GSF); chosen by itself when the map does not fit in memory");
+  app->add_option("--tile-rows", args->tileRows,
+                  "Rows per band (default: bands of <= 256 MB of heights); implies --tiled")
+      ->check(CLI::PositiveNumber);
+  app->add_option("--bands", args->bands,
+                  "K:M: compute only bands K..M-1 and write DIR/band-K.raw (float64 mm) and\n"
+                  "DIR/band-K.json; `scallop merge DIR` assembles the outputs when all exist");
   app->add_flag("--print-default-job", *printDefault,
                 "Print the built-in default job file and exit");
   return {app, [args, printDefault, &common]() {
