@@ -170,13 +170,16 @@ SweptSegment::SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& 
     highM_ = cutterSupport(cutter_, axis_, m_);
     // Section roots at evenly spaced offsets across K (see section()).
     const double cMin = dot(lowM_, m_), cMax = dot(highM_, m_);
-    nodes_[0] = {-1, lowM_};
-    nodes_[kSectionNodes - 1] = {1, highM_};
+    nodes_[0] = {-1, lowM_, 0.0};
+    nodes_[kSectionNodes - 1] = {1, highM_, 0.0};
     for (int k = 1; k + 1 < kSectionNodes; ++k) {
       const double c = cMin + (cMax - cMin) * k / (kSectionNodes - 1);
       double root = 0;
       const Section sec = search(c, -1, lowM_, 1, highM_, 0, &root);
-      nodes_[size_t(k)] = {root, sec.point};
+      const SupportWithSlope sw = supportWithSlope(
+          cutter_, axis_, n_ * (1 - root * root) + m_ * (2 * root), n_ * (-2 * root) + m_ * 2);
+      const double dcdt = dot(sw.slope, m_);
+      nodes_[size_t(k)] = {root, sec.point, std::isfinite(dcdt) ? dcdt : 0.0};
     }
   }
 }
@@ -271,8 +274,17 @@ SweptSegment::Section SweptSegment::section(double c) const {
   const int k = std::clamp(int(u), 0, kSectionNodes - 2);
   const SectionNode& a = nodes_[size_t(k)];
   const SectionNode& b = nodes_[size_t(k + 1)];
-  if (dot(a.point, m_) - c <= 0 && dot(b.point, m_) - c >= 0) {
-    const double guess = a.t + (u - k) * (b.t - a.t);
+  const double ca = dot(a.point, m_), cb = dot(b.point, m_);
+  if (ca - c <= 0 && cb - c >= 0) {
+    // Cubic Hermite interpolation of t(c) with the nodes' slopes dt/dc where both are
+    // finite (near K's extremes dc/dt vanishes), linear otherwise.
+    const double dc = cb - ca, x = dc > 0 ? (c - ca) / dc : 0.0;
+    double guess = a.t + x * (b.t - a.t);
+    if (a.dcdt > 1e-9 && b.dcdt > 1e-9 && dc > 0) {
+      const double x2 = x * x, x3 = x2 * x;
+      guess = (2 * x3 - 3 * x2 + 1) * a.t + (x3 - 2 * x2 + x) * dc / a.dcdt +
+              (-2 * x3 + 3 * x2) * b.t + (x3 - x2) * dc / b.dcdt;
+    }
     return search(c, a.t, a.point, b.t, b.point, std::clamp(guess, a.t, b.t), nullptr);
   }
   return search(c, -1, lowM_, 1, highM_, 0, nullptr);

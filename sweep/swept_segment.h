@@ -85,6 +85,7 @@ class SweptSegment {
   struct SectionNode {
     double t = 0;
     Vec3 point;
+    double dcdt = 0;  // slope of the offset along the parameter there (0: unknown)
   };
   std::array<SectionNode, kSectionNodes> nodes_{};
 };
