@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "analysis/path_interval.h"
+#include "analysis/seed_tables.h"
 #include "analysis/simulated_interval.h"
 #include "analysis/tool_conditions.h"
 #include "sweep/input_error.h"
@@ -27,59 +28,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// ---- The printed tables (the seeds' numbers, as printed) ------------------------------
+// The printed tables themselves are in analysis/seed_tables.h.
 
-const char* const kProcedures[] = {"computational", "sekine", "redonnet", "bedi"};
 const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd"};
-
-// Seed 000: Tables 2/4 (R = 3, Rcr = 1) and 3/5 (R = 6, Rcr = 2), conditions 1-4.
-struct Seed000Condition {
-  int lTable, hTable, index;
-  double radius, corner, rho, h;
-  double printedL2[4];  // Table 2/3, in kProcedures order
-  double printedH[4];   // Table 4/5, from the printed computational L/2
-};
-const Seed000Condition kSeed000[] = {
-    {2, 4, 1, 3, 1, 5, 0.05, {1.442, 1.086, 1.547, 1.437}, {0.050, 0.088, 0.043, 0.050}},
-    {2, 4, 2, 3, 1, 5, 0.10, {1.879, 1.534, 2.186, 1.864}, {0.100, 0.150, 0.074, 0.103}},
-    {2, 4, 3, 3, 1, 10, 0.05, {1.083, 0.785, 1.118, 1.081}, {0.050, 0.096, 0.047, 0.050}},
-    {2, 4, 4, 3, 1, 10, 0.10, {1.479, 1.108, 1.579, 1.474}, {0.100, 0.179, 0.088, 0.101}},
-    {3, 5, 1, 6, 2, 5, 0.05, {2.115, 1.536, 2.188, 2.112}, {0.050, 0.095, 0.047, 0.050}},
-    {3, 5, 2, 6, 2, 5, 0.10, {2.883, 2.171, 3.093, 2.874}, {0.100, 0.177, 0.087, 0.101}},
-    {3, 5, 3, 6, 2, 10, 0.05, {1.558, 1.112, 1.581, 1.556}, {0.050, 0.098, 0.049, 0.050}},
-    {3, 5, 4, 6, 2, 10, 0.10, {2.167, 1.571, 2.235, 2.162}, {0.100, 0.191, 0.094, 0.100}},
-};
-
-// Seed 001: Tables 1 (ball, no inclination) and 2 (filleted, theta = 5 deg) give L/2;
-// Tables 3 and 4 the tool condition parameters (ap = 0.5 mm, see tool_conditions.h).
-struct Seed001Condition {
-  const char* ball;
-  const char* filleted;
-  double radius, corner, h, spindle;
-  double ballL2, filletedL2;
-  double ballSl1, ballSl2, ballV1, ballV2;
-  double filSl1, filSl2, filV1, filV2;
-};
-const Seed001Condition kSeed001[] = {
-    {"B1a", "F1a", 3, 1, 0.05, 1400, 0.545, 1.442, 5.21, 1.71, 14.59, 4.80, 4.46, 2.13, 25.22,
-     20.43},
-    {"B1b", "F1b", 3, 1, 0.10, 1400, 0.768, 1.879, 5.21, 2.41, 14.59, 6.76, 4.46, 2.70, 25.22,
-     21.49},
-    {"B2a", "F2a", 5, 1, 0.05, 1400, 0.705, 2.090, 6.85, 2.22, 19.17, 6.20, 5.75, 2.90, 42.81,
-     38.03},
-    {"B2b", "F2b", 5, 1, 0.10, 1400, 0.995, 2.843, 6.85, 3.13, 19.17, 8.75, 5.75, 3.62, 42.81,
-     39.08},
-    {"B3a", "F3a", 6, 2, 0.05, 1200, 0.773, 2.115, 7.53, 2.43, 18.08, 5.83, 7.29, 3.33, 40.18,
-     33.75},
-    {"B3b", "F3b", 6, 2, 0.10, 1200, 1.091, 2.884, 7.53, 3.43, 18.08, 8.22, 7.29, 4.26, 40.18,
-     35.03},
-    {"B4a", "F4a", 7, 3, 0.05, 1200, 0.835, 2.140, 8.16, 2.62, 19.59, 6.30, 8.31, 3.59, 42.77,
-     34.71},
-    {"B4b", "F4b", 7, 3, 0.10, 1200, 1.179, 2.924, 8.16, 3.70, 19.59, 8.89, 8.31, 4.67, 42.77,
-     36.26},
-};
-constexpr double kSeed001Inclination = 5.0;  // deg, filleted end milling
-constexpr double kSeed001DepthOfCut = 0.5;   // mm
 
 // ---- Tables as rows of JSON cells ---------------------------------------------------------
 
@@ -248,31 +199,32 @@ void seed000(Run& run) {
               "computed_minus_simulated_um"},
              {}};
     for (const Seed000Condition& c : kSeed000) {
-      if (c.lTable != lTable) continue;
-      const SimulatedPass pass(Cutter::make(CutterType::Bull, c.radius, c.corner), c.rho, 0);
+      if (c.lengthTable != lTable) continue;
+      const SimulatedPass pass(Cutter::make(CutterType::Bull, c.radius, c.cornerRadius), c.leadDeg,
+                               0);
       const SideIntervals exact = pass.halfIntervals(c.h);
-      const double trueH = pass.cusp(2 * c.printedL2[0]).heightMm;
+      const double trueH = pass.cusp(2 * c.halfInterval[0]).heightMm;
       std::vector<Marker> markers;
-      for (int p = 0; p < 4; ++p) {
-        const ProcedureResult l2 = kL2Fns[p](c.radius, c.corner, c.rho, c.h);
-        const double atPrinted = pass.cusp(2 * c.printedL2[p]).heightMm;
-        lt.rows.push_back({c.index, c.rho, c.h, kProcedures[p], c.printedL2[p], valueOrNull(l2),
-                           atPrinted, 1000 * (atPrinted - c.h),
+      for (int p = 0; p < kSeed000Procedures; ++p) {
+        const ProcedureResult l2 = kL2Fns[p](c.radius, c.cornerRadius, c.leadDeg, c.h);
+        const double atPrinted = pass.cusp(2 * c.halfInterval[p]).heightMm;
+        lt.rows.push_back({c.condition, c.leadDeg, c.h, kSeed000ProcedureNames[p],
+                           c.halfInterval[p], valueOrNull(l2), atPrinted, 1000 * (atPrinted - c.h),
                            l2.applicable ? json(pass.cusp(2 * l2.value).heightMm) : json(nullptr),
                            exact.halfIntervalMm(),
-                           1000 * (c.printedL2[p] - exact.halfIntervalMm())});
-        const ProcedureResult h = kHFns[p](c.radius, c.corner, c.rho, c.printedL2[0]);
-        ht.rows.push_back({c.index, c.rho, c.printedL2[0], kProcedures[p], c.printedH[p],
-                           valueOrNull(h), trueH, 1000 * (c.printedH[p] - trueH),
+                           1000 * (c.halfInterval[p] - exact.halfIntervalMm())});
+        const ProcedureResult h = kHFns[p](c.radius, c.cornerRadius, c.leadDeg, c.halfInterval[0]);
+        ht.rows.push_back({c.condition, c.leadDeg, c.halfInterval[0], kSeed000ProcedureNames[p],
+                           c.scallop[p], valueOrNull(h), trueH, 1000 * (c.scallop[p] - trueH),
                            h.applicable ? json(1000 * (h.value - trueH)) : json(nullptr)});
-        markers.push_back({kProcedures[p], c.printedL2[p], kColours[p]});
+        markers.push_back({kSeed000ProcedureNames[p], c.halfInterval[p], kColours[p]});
       }
-      run.picture(fmt::format("seed000_table{}_condition{}", lTable, c.index),
+      run.picture(fmt::format("seed000_table{}_condition{}", lTable, c.condition),
                   profilePicture(
                       pass,
                       fmt::format("Seed 000 Table {} condition {}: bull R = {:g}, Rcr = {:g} mm, "
                                   "\xCF\x81 = {:g}\xC2\xB0, h = {:g} mm (printed L/2)",
-                                  lTable, c.index, c.radius, c.corner, c.rho, c.h),
+                                  lTable, c.condition, c.radius, c.cornerRadius, c.leadDeg, c.h),
                       c.h, exact.halfIntervalMm(), markers));
     }
     run.tables.push_back(lt);
@@ -323,42 +275,48 @@ void seed001(Run& run) {
       t.rows.push_back({name, R, r, h, params[k], units[k], printed[k], computed[k],
                         computed[k] - printed[k], notSimulated});
   };
-  for (const Seed001Condition& c : kSeed001) {
-    for (int filleted = 0; filleted < 2; ++filleted) {
-      const Cutter cutter = filleted ? Cutter::make(CutterType::Bull, c.radius, c.corner)
-                                     : Cutter::make(CutterType::Ball, c.radius);
-      const double lead = filleted ? kSeed001Inclination : 0;
-      const double printed = filleted ? c.filletedL2 : c.ballL2;
+  for (int i = 0; i < kSeed001Columns; ++i) {
+    for (const Seed001Column* c : {&kSeed001Ball[i], &kSeed001Filleted[i]}) {
+      const bool filleted = c->cornerRadius > 0;
+      const Cutter cutter = filleted ? Cutter::make(CutterType::Bull, c->radius, c->cornerRadius)
+                                     : Cutter::make(CutterType::Ball, c->radius);
+      const double lead = filleted ? kSeed001InclinationDeg : 0;
+      const double printed = c->halfInterval;
       const SimulatedPass pass(cutter, lead, 0);
-      const SideIntervals exact = pass.halfIntervals(c.h);
-      const ProcedureResult l2 = filleted ? halfIntervalComputational(c.radius, c.corner, lead, c.h)
-                                          : halfIntervalBall(c.radius, c.h);
+      const SideIntervals exact = pass.halfIntervals(c->h);
+      const ProcedureResult l2 =
+          filleted ? halfIntervalComputational(c->radius, c->cornerRadius, lead, c->h)
+                   : halfIntervalBall(c->radius, c->h);
       const double atPrinted = pass.cusp(2 * printed).heightMm;
-      const char* name = filleted ? c.filleted : c.ball;
       (filleted ? t2 : t1)
-          .rows.push_back({name, c.radius, filleted ? json(c.corner) : json(nullptr), lead, c.h,
-                           printed, valueOrNull(l2), atPrinted, 1000 * (atPrinted - c.h),
-                           exact.halfIntervalMm(), 1000 * (printed - exact.halfIntervalMm())});
+          .rows.push_back({c->name, c->radius, filleted ? json(c->cornerRadius) : json(nullptr),
+                           lead, c->h, printed, valueOrNull(l2), atPrinted,
+                           1000 * (atPrinted - c->h), exact.halfIntervalMm(),
+                           1000 * (printed - exact.halfIntervalMm())});
       const std::string procedure = filleted ? "computational" : "ball";
       const std::string tool =
-          filleted ? fmt::format("bull R = {:g}, Rcr = {:g} mm, \xCE\xB8 = 5\xC2\xB0", c.radius,
-                                 c.corner)
-                   : fmt::format("ball R = {:g} mm", c.radius);
-      run.picture(fmt::format("seed001_table{}_{}", filleted ? 2 : 1, name),
+          filleted ? fmt::format("bull R = {:g}, Rcr = {:g} mm, \xCE\xB8 = 5\xC2\xB0", c->radius,
+                                 c->cornerRadius)
+                   : fmt::format("ball R = {:g} mm", c->radius);
+      run.picture(fmt::format("seed001_table{}_{}", filleted ? 2 : 1, c->name),
                   profilePicture(pass,
                                  fmt::format("Seed 001 Table {} {}: {}, h = {:g} mm (printed L/2)",
-                                             filleted ? 2 : 1, name, tool, c.h),
-                                 c.h, exact.halfIntervalMm(),
+                                             filleted ? 2 : 1, c->name, tool, c->h),
+                                 c->h, exact.halfIntervalMm(),
                                  {{procedure, printed, kColours[filleted ? 0 : 4]}}));
     }
-    const double ballPrinted[] = {c.ballSl1, c.ballSl2, c.ballV1, c.ballV2};
-    conditions(t3, c.ball, c.radius, 0, c.h, ballFirstPass(c.radius, kSeed001DepthOfCut, c.spindle),
-               ballLaterPass(c.radius, c.h, c.spindle), ballPrinted);
-    const double filPrinted[] = {c.filSl1, c.filSl2, c.filV1, c.filV2};
-    conditions(
-        t4, c.filleted, c.radius, c.corner, c.h,
-        filletedFirstPass(c.radius, c.corner, kSeed001Inclination, kSeed001DepthOfCut, c.spindle),
-        filletedLaterPass(c.radius, c.corner, kSeed001Inclination, c.h, c.spindle), filPrinted);
+    const Seed001Column& b = kSeed001Ball[i];
+    const double ballPrinted[] = {b.sl1, b.sl2, b.v1, b.v2};
+    conditions(t3, b.name, b.radius, 0, b.h,
+               ballFirstPass(b.radius, kSeed001DepthOfCutMm, b.spindle),
+               ballLaterPass(b.radius, b.h, b.spindle), ballPrinted);
+    const Seed001Column& f = kSeed001Filleted[i];
+    const double filPrinted[] = {f.sl1, f.sl2, f.v1, f.v2};
+    conditions(t4, f.name, f.radius, f.cornerRadius, f.h,
+               filletedFirstPass(f.radius, f.cornerRadius, kSeed001InclinationDeg,
+                                 kSeed001DepthOfCutMm, f.spindle),
+               filletedLaterPass(f.radius, f.cornerRadius, kSeed001InclinationDeg, f.h, f.spindle),
+               filPrinted);
   }
   for (Table* t : {&t1, &t2, &t3, &t4}) run.tables.push_back(*t);
 }

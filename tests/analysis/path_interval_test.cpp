@@ -9,30 +9,16 @@
 #include <limits>
 #include <string>
 
+#include "analysis/seed_tables.h"
+
 namespace scallop {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kThreeDecimals = 0.0005;  // half a unit of the printed last digit
 
-// One column ("condition") of seed 000 Tables 2-5.
-struct Condition {
-  double radius, cornerRadius, leadDeg, h;
-  double computational, sekine, redonnet, bedi;  // Tables 2/3: L/2, mm
-  double hSekine, hRedonnet, hBedi;              // Tables 4/5: h from L/2, mm
-};
-
-// Table 2 / Table 4 (R = 3, Rcr = 1) and Table 3 / Table 5 (R = 6, Rcr = 2), as printed.
-const Condition kSeed000[] = {
-    {3, 1, 5, 0.05, 1.442, 1.086, 1.547, 1.437, 0.088, 0.043, 0.050},
-    {3, 1, 5, 0.10, 1.879, 1.534, 2.186, 1.864, 0.150, 0.074, 0.103},
-    {3, 1, 10, 0.05, 1.083, 0.785, 1.118, 1.081, 0.096, 0.047, 0.050},
-    {3, 1, 10, 0.10, 1.479, 1.108, 1.579, 1.474, 0.179, 0.088, 0.101},
-    {6, 2, 5, 0.05, 2.115, 1.536, 2.188, 2.112, 0.095, 0.047, 0.050},
-    {6, 2, 5, 0.10, 2.883, 2.171, 3.093, 2.874, 0.177, 0.087, 0.101},
-    {6, 2, 10, 0.05, 1.558, 1.112, 1.581, 1.556, 0.098, 0.049, 0.050},
-    {6, 2, 10, 0.10, 2.167, 1.571, 2.235, 2.162, 0.191, 0.094, 0.100},
-};
+// One column ("condition") of seed 000 Tables 2-5, as printed (analysis/seed_tables.h).
+using Condition = Seed000Condition;
 
 std::string label(const Condition& c) {
   return "R=" + std::to_string(c.radius) + " Rcr=" + std::to_string(c.cornerRadius) +
@@ -116,7 +102,7 @@ TEST(PathIntervalSeed000, Tables2And3_Sekine_Eqs4to8) {
   for (const Condition& c : kSeed000) {
     ProcedureResult r = halfIntervalSekine(c.radius, c.cornerRadius, c.leadDeg, c.h);
     ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, c.sekine, kThreeDecimals) << label(c);
+    EXPECT_NEAR(r.value, c.halfInterval[1], kThreeDecimals) << label(c);
   }
 }
 
@@ -124,7 +110,7 @@ TEST(PathIntervalSeed000, Tables2And3_Redonnet_Eqs9And8) {
   for (const Condition& c : kSeed000) {
     ProcedureResult r = halfIntervalRedonnet(c.radius, c.cornerRadius, c.leadDeg, c.h);
     ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, c.redonnet, kThreeDecimals) << label(c);
+    EXPECT_NEAR(r.value, c.halfInterval[2], kThreeDecimals) << label(c);
   }
 }
 
@@ -132,7 +118,7 @@ TEST(PathIntervalSeed000, Tables2And3_Bedi_Eqs10And11) {
   for (const Condition& c : kSeed000) {
     ProcedureResult r = halfIntervalBedi(c.radius, c.cornerRadius, c.leadDeg, c.h);
     ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, c.bedi, kThreeDecimals) << label(c);
+    EXPECT_NEAR(r.value, c.halfInterval[3], kThreeDecimals) << label(c);
   }
 }
 
@@ -165,8 +151,8 @@ TEST(PathIntervalSeed000, Tables2And3_Computational_NotReproduced_Documented) {
     ASSERT_TRUE(r.applicable) << r.reason;
     double brute = BruteTorus(c.radius, c.cornerRadius, c.leadDeg, c.h).halfInterval();
     EXPECT_NEAR(r.value, brute, 1e-6) << label(c);
-    EXPECT_GE(r.value + kThreeDecimals, c.computational) << label(c);
-    EXPECT_LT(r.value - c.computational, 0.014) << label(c);
+    EXPECT_GE(r.value + kThreeDecimals, c.halfInterval[0]) << label(c);
+    EXPECT_LT(r.value - c.halfInterval[0], 0.014) << label(c);
   }
 }
 
@@ -187,8 +173,8 @@ TEST(PathIntervalSeed000, Computational_ScalesWithTheTool) {
 // h within half a unit of it (h grows with L/2, so the interval's ends bound h).
 void expectReproducedWithinInputRounding(ProcedureResult (*fn)(double, double, double, double),
                                          const Condition& c, double printedH, const char* name) {
-  ProcedureResult lo = fn(c.radius, c.cornerRadius, c.leadDeg, c.computational - kThreeDecimals);
-  ProcedureResult hi = fn(c.radius, c.cornerRadius, c.leadDeg, c.computational + kThreeDecimals);
+  ProcedureResult lo = fn(c.radius, c.cornerRadius, c.leadDeg, c.halfInterval[0] - kThreeDecimals);
+  ProcedureResult hi = fn(c.radius, c.cornerRadius, c.leadDeg, c.halfInterval[0] + kThreeDecimals);
   ASSERT_TRUE(lo.applicable && hi.applicable) << name << " " << label(c);
   EXPECT_LE(lo.value, printedH + kThreeDecimals) << name << " " << label(c);
   EXPECT_GE(hi.value, printedH - kThreeDecimals) << name << " " << label(c);
@@ -196,9 +182,9 @@ void expectReproducedWithinInputRounding(ProcedureResult (*fn)(double, double, d
 
 TEST(PathIntervalSeed000, Tables4And5_ScallopHeight_Eqs12And13_WithinInputRounding) {
   for (const Condition& c : kSeed000) {
-    expectReproducedWithinInputRounding(scallopHeightSekine, c, c.hSekine, "sekine");
-    expectReproducedWithinInputRounding(scallopHeightRedonnet, c, c.hRedonnet, "redonnet");
-    expectReproducedWithinInputRounding(scallopHeightBedi, c, c.hBedi, "bedi");
+    expectReproducedWithinInputRounding(scallopHeightSekine, c, c.scallop[1], "sekine");
+    expectReproducedWithinInputRounding(scallopHeightRedonnet, c, c.scallop[2], "redonnet");
+    expectReproducedWithinInputRounding(scallopHeightBedi, c, c.scallop[3], "bedi");
   }
 }
 
@@ -209,16 +195,16 @@ TEST(PathIntervalSeed000, Tables4And5_ScallopHeight_Eqs12And13_WithinInputRoundi
 // of at least 1.08345 mm (our exact computational value is 1.084488, giving 0.095711).
 TEST(PathIntervalSeed000, Tables4And5_ScallopHeight_Eqs12And13) {
   for (const Condition& c : kSeed000) {
-    const double l2 = c.computational;  // the tables start from the printed L/2
+    const double l2 = c.halfInterval[0];  // the tables start from the printed L/2
     ProcedureResult s = scallopHeightSekine(c.radius, c.cornerRadius, c.leadDeg, l2);
     ProcedureResult r = scallopHeightRedonnet(c.radius, c.cornerRadius, c.leadDeg, l2);
     ProcedureResult b = scallopHeightBedi(c.radius, c.cornerRadius, c.leadDeg, l2);
     ASSERT_TRUE(s.applicable && r.applicable && b.applicable) << label(c);
     if (&c != &kSeed000[2]) {
-      EXPECT_NEAR(s.value, c.hSekine, kThreeDecimals) << label(c);
+      EXPECT_NEAR(s.value, c.scallop[1], kThreeDecimals) << label(c);
     }
-    EXPECT_NEAR(r.value, c.hRedonnet, kThreeDecimals) << label(c);
-    EXPECT_NEAR(b.value, c.hBedi, kThreeDecimals) << label(c);
+    EXPECT_NEAR(r.value, c.scallop[2], kThreeDecimals) << label(c);
+    EXPECT_NEAR(b.value, c.scallop[3], kThreeDecimals) << label(c);
   }
 }
 
@@ -231,7 +217,7 @@ TEST(PathIntervalSeed000, Table4_Cell3_Sekine_NotReproducedFromPrintedInput_Docu
   const double rLong = rShort / std::sin(t);
   EXPECT_NEAR(reff, (rLong * rLong + rShort * rShort) / (2 * rShort), 1e-12);
   double exactL2 = halfIntervalComputational(c.radius, c.cornerRadius, c.leadDeg, c.h).value;
-  EXPECT_NEAR(scallopHeightSekine(3, 1, 10, exactL2).value, c.hSekine, kThreeDecimals);
+  EXPECT_NEAR(scallopHeightSekine(3, 1, 10, exactL2).value, c.scallop[1], kThreeDecimals);
 }
 
 // The "3D geometrical computation" row of Tables 4/5 is the h the L/2 was made from:
@@ -246,7 +232,7 @@ TEST(PathIntervalSeed000, Tables4And5_ComputationalRow_RoundTrip_Documented) {
     ASSERT_TRUE(h.applicable) << h.reason;
     EXPECT_NEAR(h.value, c.h, 1e-6) << label(c);
     ProcedureResult fromPrinted =
-        scallopHeightComputational(c.radius, c.cornerRadius, c.leadDeg, c.computational);
+        scallopHeightComputational(c.radius, c.cornerRadius, c.leadDeg, c.halfInterval[0]);
     ASSERT_TRUE(fromPrinted.applicable) << fromPrinted.reason;
     EXPECT_LE(fromPrinted.value, c.h + 1e-9) << label(c);
     EXPECT_GT(fromPrinted.value, c.h - 0.002) << label(c);
@@ -256,14 +242,11 @@ TEST(PathIntervalSeed000, Tables4And5_ComputationalRow_RoundTrip_Documented) {
 // ---- Seed 001 Tables 1 and 2 -----------------------------------------------------------
 
 TEST(PathIntervalSeed001, Table1_Ball_Eq1) {
-  const double radius[] = {3, 3, 5, 5, 6, 6, 7, 7};
-  const double h[] = {0.05, 0.10, 0.05, 0.10, 0.05, 0.10, 0.05, 0.10};
-  const double printed[] = {0.545, 0.768, 0.705, 0.995, 0.773, 1.091, 0.835, 1.179};
-  for (int i = 0; i < 8; ++i) {
-    ProcedureResult r = halfIntervalBall(radius[i], h[i]);
+  for (const Seed001Column& b : kSeed001Ball) {
+    ProcedureResult r = halfIntervalBall(b.radius, b.h);
     ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, printed[i], kThreeDecimals) << "B" << i;
-    EXPECT_NEAR(scallopHeightBall(radius[i], r.value).value, h[i], 1e-12);
+    EXPECT_NEAR(r.value, b.halfInterval, kThreeDecimals) << b.name;
+    EXPECT_NEAR(scallopHeightBall(b.radius, r.value).value, b.h, 1e-12);
   }
 }
 
@@ -277,16 +260,13 @@ TEST(PathIntervalSeed001, Table2_F2a_Computational_Reproduced) {
 }
 
 TEST(PathIntervalSeed001, Table2_Computational_NotReproduced_Documented) {
-  const double radius[] = {3, 3, 5, 5, 6, 6, 7, 7};
-  const double corner[] = {1, 1, 1, 1, 2, 2, 3, 3};
-  const double h[] = {0.05, 0.10, 0.05, 0.10, 0.05, 0.10, 0.05, 0.10};
-  const double printed[] = {1.442, 1.879, 2.090, 2.843, 2.115, 2.884, 2.140, 2.924};
-  for (int i = 0; i < 8; ++i) {
-    ProcedureResult r = halfIntervalComputational(radius[i], corner[i], 5, h[i]);
+  for (const Seed001Column& f : kSeed001Filleted) {
+    ProcedureResult r = halfIntervalComputational(f.radius, f.cornerRadius, 5, f.h);
     ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, BruteTorus(radius[i], corner[i], 5, h[i]).halfInterval(), 1e-6) << i;
-    EXPECT_GE(r.value + kThreeDecimals, printed[i]) << i;
-    EXPECT_LT(r.value - printed[i], 0.014) << i;
+    EXPECT_NEAR(r.value, BruteTorus(f.radius, f.cornerRadius, 5, f.h).halfInterval(), 1e-6)
+        << f.name;
+    EXPECT_GE(r.value + kThreeDecimals, f.halfInterval) << f.name;
+    EXPECT_LT(r.value - f.halfInterval, 0.014) << f.name;
   }
 }
 

@@ -8,45 +8,22 @@
 #include <limits>
 #include <string>
 
+#include "analysis/seed_tables.h"
+
 namespace scallop {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoDecimals = 0.005;  // half a unit of the printed last digit
-constexpr double kDepthOfCut = 0.5;     // mm; see tool_conditions.cpp for the reading
-constexpr double kInclination = 5.0;    // deg, "set to 5.0 deg. in filleted end milling"
+constexpr double kDepthOfCut = kSeed001DepthOfCutMm;
+constexpr double kInclination = kSeed001InclinationDeg;
 
 // One column of Table 3 (ball) or Table 4 (filleted), as printed.
-struct Column {
-  const char* name;
-  double radius, cornerRadius, spindle, h;
-  double sl1, sl2, v1, v2;
-};
-
-const Column kTable3[] = {
-    {"B1a", 3, 0, 1400, 0.05, 5.21, 1.71, 14.59, 4.80},
-    {"B1b", 3, 0, 1400, 0.10, 5.21, 2.41, 14.59, 6.76},
-    {"B2a", 5, 0, 1400, 0.05, 6.85, 2.22, 19.17, 6.20},
-    {"B2b", 5, 0, 1400, 0.10, 6.85, 3.13, 19.17, 8.75},
-    {"B3a", 6, 0, 1200, 0.05, 7.53, 2.43, 18.08, 5.83},
-    {"B3b", 6, 0, 1200, 0.10, 7.53, 3.43, 18.08, 8.22},
-    {"B4a", 7, 0, 1200, 0.05, 8.16, 2.62, 19.59, 6.30},
-    {"B4b", 7, 0, 1200, 0.10, 8.16, 3.70, 19.59, 8.89},
-};
-
-const Column kTable4[] = {
-    {"F1a", 3, 1, 1400, 0.05, 4.46, 2.13, 25.22, 20.43},
-    {"F1b", 3, 1, 1400, 0.10, 4.46, 2.70, 25.22, 21.49},
-    {"F2a", 5, 1, 1400, 0.05, 5.75, 2.90, 42.81, 38.03},
-    {"F2b", 5, 1, 1400, 0.10, 5.75, 3.62, 42.81, 39.08},
-    {"F3a", 6, 2, 1200, 0.05, 7.29, 3.33, 40.18, 33.75},
-    {"F3b", 6, 2, 1200, 0.10, 7.29, 4.26, 40.18, 35.03},
-    {"F4a", 7, 3, 1200, 0.05, 8.31, 3.59, 42.77, 34.71},
-    {"F4b", 7, 3, 1200, 0.10, 8.31, 4.67, 42.77, 36.26},
-};
-
-// Seed 001 Table 2: L/2 of the filleted conditions (for Eq. 13 as printed).
-const double kTable2HalfInterval[] = {1.442, 1.879, 2.090, 2.843, 2.115, 2.884, 2.140, 2.924};
+// Seed 001 Tables 1-4 as printed (analysis/seed_tables.h): ball (Table 3) and filleted
+// (Table 4) columns; a filleted column's halfInterval is its Table 2 L/2.
+using Column = Seed001Column;
+const auto& kTable3 = kSeed001Ball;
+const auto& kTable4 = kSeed001Filleted;
 
 void expectNotApplicable(const ToolConditions& c, const std::string& what) {
   EXPECT_FALSE(c.applicable) << what;
@@ -148,11 +125,11 @@ TEST(ToolConditionsSeed001, Table4_Eq13AsPrinted_NotReproduced_Documented) {
     ToolConditions table =
         filletedLaterPass(c.radius, c.cornerRadius, kInclination, c.h, c.spindle);
     ToolConditions printed = filletedLaterPassEq13(c.radius, c.cornerRadius, kInclination, c.h,
-                                                   kTable2HalfInterval[i], c.spindle);
+                                                   kTable4[i].halfInterval, c.spindle);
     ASSERT_TRUE(printed.applicable) << c.name << ": " << printed.reason;
     const double reach = c.radius - c.cornerRadius + table.rTzMm;
     const double expected =
-        reach * (0.5 * table.betaTzRad + std::asin(kTable2HalfInterval[i] / reach));
+        reach * (0.5 * table.betaTzRad + std::asin(kTable4[i].halfInterval / reach));
     EXPECT_NEAR(printed.frictionalDistanceMm, expected, 1e-12) << c.name;
     EXPECT_NEAR(printed.frictionalDistanceMm, eq13[i], 0.0005) << c.name;
     EXPECT_GT(printed.frictionalDistanceMm - c.sl2, 0.4) << c.name;
