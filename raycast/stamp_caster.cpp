@@ -1,13 +1,10 @@
 #include "raycast/stamp_caster.h"
 
-#include <tbb/blocked_range2d.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <mutex>
+
+#include "raycast/cell_tiles.h"
 
 namespace scallop {
 
@@ -113,69 +110,51 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
         buckets[size_t(by * nbx + bx)].push_back(uint32_t(k));
   }
 
-  // --- Tiles of cells, in parallel: each tile is one task, so no two tasks write the
-  // same cell, and min() makes the order of stamps irrelevant to the result. ---------
-  const int64_t tilesX = (g.nx + tile - 1) / tile, tilesY = (g.ny + tile - 1) / tile;
-  std::vector<uint64_t> evaluations(size_t(tilesX * tilesY), 0);
-  std::atomic<int64_t> done{0};
-  std::mutex progressMutex;
-  tbb::parallel_for(
-      tbb::blocked_range2d<int64_t>(0, tilesY, 1, 0, tilesX, 1),
-      [&](const tbb::blocked_range2d<int64_t>& r) {
-        std::vector<uint32_t> mine;
-        for (int64_t ty = r.rows().begin(); ty < r.rows().end(); ++ty) {
-          for (int64_t tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
-            const int64_t i0 = tx * tile, i1 = std::min(g.nx, i0 + tile);
-            const int64_t j0 = ty * tile, j1 = std::min(g.ny, j0 + tile);
-            const double x0 = g.originX + double(i0) * g.spacing,
-                         x1 = g.originX + double(i1) * g.spacing;
-            const double y0 = g.originY + double(j0) * g.spacing,
-                         y1 = g.originY + double(j1) * g.spacing;
-            mine.clear();
-            for (int64_t by = bucketOf(y0, g.originY, nby); by <= bucketOf(y1, g.originY, nby);
-                 ++by)
-              for (int64_t bx = bucketOf(x0, g.originX, nbx); bx <= bucketOf(x1, g.originX, nbx);
-                   ++bx) {
-                const std::vector<uint32_t>& b = buckets[size_t(by * nbx + bx)];
-                mine.insert(mine.end(), b.begin(), b.end());
-              }
-            std::sort(mine.begin(), mine.end());
-            mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+  // --- Tiles of cells, in parallel (cell_tiles.h); min() makes the order of stamps
+  // irrelevant to the result. ----------------------------------------------------------
+  const uint64_t evaluations = forEachCellTile(
+      g, tile, options.progress, [&](int64_t i0, int64_t i1, int64_t j0, int64_t j1) {
+        // The tile's extent (cellRange below uses the same cell edges).
+        const double x0 = g.originX + double(i0) * g.spacing,
+                     x1 = g.originX + double(i1) * g.spacing;
+        const double y0 = g.originY + double(j0) * g.spacing,
+                     y1 = g.originY + double(j1) * g.spacing;
+        thread_local std::vector<uint32_t> mine;
+        mine.clear();
+        for (int64_t by = bucketOf(y0, g.originY, nby); by <= bucketOf(y1, g.originY, nby); ++by)
+          for (int64_t bx = bucketOf(x0, g.originX, nbx); bx <= bucketOf(x1, g.originX, nbx);
+               ++bx) {
+            const std::vector<uint32_t>& b = buckets[size_t(by * nbx + bx)];
+            mine.insert(mine.end(), b.begin(), b.end());
+          }
+        std::sort(mine.begin(), mine.end());
+        mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
 
-            uint64_t evals = 0;
-            for (uint32_t k : mine) {
-              const Stamp& s = stamps[k];
-              if (s.x1 < x0 || s.x0 > x1 || s.y1 < y0 || s.y0 > y1) continue;
-              const SweptSegment& seg = segments[s.segment];
-              int64_t a0, a1, b0, b1;
-              cellRange(s.x0, s.x1, g.originX, g.spacing, i1, a0, a1);
-              cellRange(s.y0, s.y1, g.originY, g.spacing, j1, b0, b1);
-              a0 = std::max(a0, i0), b0 = std::max(b0, j0);
-              for (int64_t j = b0; j < b1; ++j) {
-                const double y = g.cellCentreY(j) - s.tip.y;
-                for (int64_t i = a0; i < a1; ++i) {
-                  double& h = map.at(i, j);
-                  if (h <= s.lowest) continue;  // this stamp cannot go lower here
-                  ++evals;
-                  const LowestPoint lp =
-                      cutterLowestPoint(seg.cutter(), seg.axis(), g.cellCentreX(i) - s.tip.x, y);
-                  if (lp.hit) h = std::min(h, lp.z + s.tip.z);
-                }
-              }
-            }
-            evaluations[size_t(ty * tilesX + tx)] = evals;
-            const int64_t cells = (j1 - j0) * (i1 - i0);
-            const int64_t now = done.fetch_add(cells) + cells;
-            if (options.progress) {
-              std::lock_guard<std::mutex> lock(progressMutex);
-              options.progress(now, g.cells());
+        uint64_t evals = 0;
+        for (uint32_t k : mine) {
+          const Stamp& s = stamps[k];
+          if (s.x1 < x0 || s.x0 > x1 || s.y1 < y0 || s.y0 > y1) continue;
+          const SweptSegment& seg = segments[s.segment];
+          int64_t a0, a1, b0, b1;
+          cellRange(s.x0, s.x1, g.originX, g.spacing, i1, a0, a1);
+          cellRange(s.y0, s.y1, g.originY, g.spacing, j1, b0, b1);
+          a0 = std::max(a0, i0), b0 = std::max(b0, j0);
+          for (int64_t j = b0; j < b1; ++j) {
+            const double y = g.cellCentreY(j) - s.tip.y;
+            for (int64_t i = a0; i < a1; ++i) {
+              double& h = map.at(i, j);
+              if (h <= s.lowest) continue;  // this stamp cannot go lower here
+              ++evals;
+              const LowestPoint lp =
+                  cutterLowestPoint(seg.cutter(), seg.axis(), g.cellCentreX(i) - s.tip.x, y);
+              if (lp.hit) h = std::min(h, lp.z + s.tip.z);
             }
           }
         }
-      },
-      tbb::simple_partitioner());
+        return evals;
+      });
 
-  for (uint64_t e : evaluations) stats.exactEvaluations += e;
+  stats.exactEvaluations = evaluations;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return stats;
 }

@@ -1,15 +1,12 @@
 #include "raycast/zmap_caster.h"
 
-#include <tbb/blocked_range2d.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <utility>
 #include <vector>
+
+#include "raycast/cell_tiles.h"
 
 namespace scallop {
 
@@ -64,55 +61,31 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
 CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   const GridSpec& g = map.grid();
-  const int64_t tile = std::max<int64_t>(1, options.tileCells);
-  const int64_t tilesX = (g.nx + tile - 1) / tile, tilesY = (g.ny + tile - 1) / tile;
   // Regions no wider than the scene's tile boxes were grown for; 1 means cell by cell.
   const int64_t region = std::max<int64_t>(
       1, std::min(options.regionCells,
                   int64_t(std::floor(2 * scene.regionHalfSize() / g.spacing * (1 - 1e-9))) + 1));
 
-  // Each work item is one square tile of cells; its evaluation count lands in its own
-  // slot, so the totals are summed in a fixed order afterwards.
-  std::vector<uint64_t> evaluations(size_t(tilesX * tilesY), 0);
-  std::atomic<int64_t> done{0};
-  std::mutex progressMutex;
-
-  tbb::parallel_for(
-      tbb::blocked_range2d<int64_t>(0, tilesY, 1, 0, tilesX, 1),
-      [&](const tbb::blocked_range2d<int64_t>& r) {
-        std::vector<SweptScene::Candidate> candidates;
-        for (int64_t ty = r.rows().begin(); ty < r.rows().end(); ++ty) {
-          for (int64_t tx = r.cols().begin(); tx < r.cols().end(); ++tx) {
-            uint64_t evals = 0;
-            SweptScene::QueryCache cache;
-            const int64_t j1 = std::min(g.ny, (ty + 1) * tile),
-                          i1 = std::min(g.nx, (tx + 1) * tile);
-            for (int64_t rj = ty * tile; rj < j1; rj += region) {
-              for (int64_t ri = tx * tile; ri < i1; ri += region) {
-                const int64_t ri1 = std::min(i1, ri + region), rj1 = std::min(j1, rj + region);
-                if (region == 1) {
-                  map.at(ri, rj) = scene.lowestHeight(g.cellCentreX(ri), g.cellCentreY(rj),
-                                                      map.at(ri, rj), evals, &cache);
-                } else {
-                  castRegion(scene, map, ri, ri1, rj, rj1, candidates, cache, evals);
-                }
-              }
-            }
-            evaluations[size_t(ty * tilesX + tx)] = evals;
-            const int64_t cells = (j1 - ty * tile) * (i1 - tx * tile);
-            const int64_t now = done.fetch_add(cells) + cells;
-            if (options.progress) {
-              std::lock_guard<std::mutex> lock(progressMutex);
-              options.progress(now, g.cells());
+  CastStats stats;
+  stats.exactEvaluations = forEachCellTile(
+      g, options.tileCells, options.progress, [&](int64_t i0, int64_t i1, int64_t j0, int64_t j1) {
+        uint64_t evals = 0;
+        SweptScene::QueryCache cache;
+        thread_local std::vector<SweptScene::Candidate> candidates;
+        for (int64_t rj = j0; rj < j1; rj += region) {
+          for (int64_t ri = i0; ri < i1; ri += region) {
+            const int64_t ri1 = std::min(i1, ri + region), rj1 = std::min(j1, rj + region);
+            if (region == 1) {
+              map.at(ri, rj) = scene.lowestHeight(g.cellCentreX(ri), g.cellCentreY(rj),
+                                                  map.at(ri, rj), evals, &cache);
+            } else {
+              castRegion(scene, map, ri, ri1, rj, rj1, candidates, cache, evals);
             }
           }
         }
-      },
-      tbb::simple_partitioner());
-
-  CastStats stats;
+        return evals;
+      });
   stats.cells = g.cells();
-  for (uint64_t e : evaluations) stats.exactEvaluations += e;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return stats;
 }
