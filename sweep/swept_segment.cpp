@@ -63,50 +63,46 @@ DistanceToCore distanceToCore(const Cutter& c, const Vec3& a, const Vec3& p) {
   return {dist, grad};
 }
 
-// A support point of K in direction v and its derivative along dv (d/dt of the support
-// point of v + t dv at t = 0), on the smooth parts (the torus and the top rim); used by
-// the Newton steps of the section search. Mirrors cutterSupport's case split.
+// A support point of K in direction v and, on the smooth parts (the torus and the top
+// rim), its derivative along dv: d/dt of the support point of v + t dv at t = 0, which the
+// Newton steps of the section search use. dv = 0 gives the plain support point.
 struct SupportWithSlope {
   Vec3 point, slope;
 };
 
 SupportWithSlope supportWithSlope(const Cutter& c, const Vec3& a, const Vec3& v, const Vec3& dv) {
   const double va = dot(v, a);
+  // The radial part of v, re-orthogonalised: for v (anti)parallel to a the first
+  // subtraction leaves round-off that may point along a itself. Below 1e-14 |v| the
+  // direction is treated as axial, whose support set is a whole end face; its centre
+  // is returned (and no slope).
   Vec3 perp = v - a * va;
   perp -= a * dot(perp, a);
   const double lp = length(perp);
-  if (!(lp > 1e-14 * length(v))) return {cutterSupport(c, a, v), Vec3{}};
-  const Vec3 e = perp / lp;
-  const Vec3 dperp = dv - a * dot(dv, a);
-  const Vec3 de = (dperp - e * dot(e, dperp)) / lp;
-  if (va > 0) return {a * c.fluteLength + e * c.radius, de * c.radius};
   const double len = length(v);
+  const bool radial = lp > 1e-14 * len;
+  const Vec3 e = radial ? perp / lp : Vec3{};
+  Vec3 de;
+  if (radial) {
+    const Vec3 dperp = dv - a * dot(dv, a);
+    de = (dperp - e * dot(e, dperp)) / lp;
+  }
+  if (va > 0) {
+    // Pointing towards the shank: the rim of the flat top at s = L.
+    return {a * c.fluteLength + e * c.radius, de * c.radius};
+  }
+  // Pointing down or sideways: the bottom rim of the core (+) r times the unit direction,
+  // i.e. the torus (ball, or the sharp rim of a flat cutter when r = 0).
   const Vec3 vh = v / len;
   const Vec3 dvh = (dv - vh * dot(vh, dv)) / len;
-  return {a * c.cornerRadius + e * c.bottomRadius() + vh * c.cornerRadius,
-          de * c.bottomRadius() + dvh * c.cornerRadius};
+  return {a * c.cornerRadius + e * c.bottomRadius() + v * (c.cornerRadius / len),
+          radial ? de * c.bottomRadius() + dvh * c.cornerRadius : Vec3{}};
 }
 
 }  // namespace
 
 Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
-  const double va = dot(dir, a);
-  // The radial part of dir, re-orthogonalised: for dir (anti)parallel to a the first
-  // subtraction leaves round-off that may point along a itself. Below 1e-14 |dir| the
-  // direction is treated as axial, whose support set is a whole end face; its centre
-  // is returned.
-  Vec3 perp = dir - a * va;
-  perp -= a * dot(perp, a);
-  const double lp = length(perp);
-  const Vec3 e = lp > 1e-14 * length(dir) ? perp / lp : Vec3{};
-  if (va > 0) {
-    // Pointing towards the shank: the rim of the flat top at s = L.
-    return a * c.fluteLength + e * c.radius;
-  }
-  // Pointing down or sideways: the bottom rim of the core (+) r times the unit direction,
-  // i.e. the torus (ball, or the sharp rim of a flat cutter when r = 0).
-  const double len = length(dir);
-  return a * c.cornerRadius + e * c.bottomRadius() + dir * (c.cornerRadius / len);
+  return supportWithSlope(c, a, dir, Vec3{}).point;
 }
 
 LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y) {
