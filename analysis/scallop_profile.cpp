@@ -14,15 +14,6 @@ ScallopProfile columnProfile(const ZMap& map, int64_t i) {
   return p;
 }
 
-ScallopProfile rowProfile(const ZMap& map, int64_t j) {
-  ScallopProfile p;
-  for (int64_t i = 0; i < map.nx(); ++i) {
-    p.position.push_back(map.grid().cellCentreX(i));
-    p.height.push_back(map.at(i, j));
-  }
-  return p;
-}
-
 double cuspHeight(const ScallopProfile& profile, double from, double to, double floorZ) {
   double top = -HUGE_VAL;
   for (size_t k = 0; k < profile.position.size(); ++k)

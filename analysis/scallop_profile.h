@@ -16,8 +16,6 @@ struct ScallopProfile {
 
 // The column of cells at index i (a line along y; a raster fed along x is crossed).
 ScallopProfile columnProfile(const ZMap& map, int64_t i);
-// The row of cells at index j (a line along x).
-ScallopProfile rowProfile(const ZMap& map, int64_t j);
 
 // Highest height minus the floor over samples with position in [from, to], mm:
 // the scallop (cusp) height left between passes whose floor is at `floorZ`.
