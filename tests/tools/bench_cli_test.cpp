@@ -2,39 +2,23 @@
 // a direct simulate() call, bit for bit.
 #include <fmt/core.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "raycast/simulation.h"
 #include "tools/bench_cases.h"
+#include "tools/cli_harness.h"
 
 namespace scallop {
 namespace {
 
-struct BenchRun {
-  int status = -1;
-  std::string out;
-};
+using scallop::test::CliRun;
+class BenchCli : public scallop::test::CliFixture {};
 
-BenchRun runScallop(const std::string& args) {
-  BenchRun r;
-  const std::string cmd = std::string(SCALLOP_BINARY) + " " + args + " 2>/dev/null";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
-
-TEST(BenchCli, QuickCaseB1PrintsTheDocumentedJson) {
-  const BenchRun r = runScallop("bench --quick --case B1 --area 2 --stamp-window 0.5 --json");
-  ASSERT_EQ(r.status, 0) << r.out;
+TEST_F(BenchCli, QuickCaseB1PrintsTheDocumentedJson) {
+  const CliRun r = run("bench --quick --case B1 --area 2 --stamp-window 0.5 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json doc = nlohmann::json::parse(r.out);  // stdout is JSON and only JSON
   ASSERT_EQ(doc["cases"].size(), 1u);
   const nlohmann::json& c = doc["cases"][0];
@@ -58,13 +42,13 @@ TEST(BenchCli, QuickCaseB1PrintsTheDocumentedJson) {
   EXPECT_EQ(c["heights_hash"].get<std::string>(), fmt::format("{:016x}", heightsHash(sim.map)));
 }
 
-TEST(BenchCli, TableOnStdoutAndUsageErrors) {
-  const BenchRun table = runScallop("bench --quick --case B3 --area 1 --no-stamp --threads 1");
+TEST_F(BenchCli, TableOnStdoutAndUsageErrors) {
+  const CliRun table = run("bench --quick --case B3 --area 1 --no-stamp --threads 1");
   ASSERT_EQ(table.status, 0);
   EXPECT_NE(table.out.find("Mcells/s"), std::string::npos) << table.out;
   EXPECT_NE(table.out.find("B3"), std::string::npos) << table.out;
-  EXPECT_EQ(runScallop("bench --case B9").status, 2);
-  EXPECT_EQ(runScallop("bench --area -1").status, 2);
+  EXPECT_EQ(run("bench --case B9").status, 2);
+  EXPECT_EQ(run("bench --area -1").status, 2);
 }
 
 TEST(BenchCases, FreeformPathHoldsOneAxisPerMove) {

@@ -61,6 +61,15 @@ TEST_F(Cli, HelpTeachesEveryOptionWithUnits) {
     EXPECT_NE(sim.out.find(word), std::string::npos) << word;
 }
 
+TEST_F(Cli, UnknownMethodIsAUsageErrorAndStampCannotBeTiled) {
+  EXPECT_EQ(run("simulate " + job().string() + " -o " + path("m") + " --method sampled").status, 2);
+  const CliRun r =
+      run("simulate " + job().string() + " -o " + path("m") + " --method stamp --tiled");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("--method"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "m" / "heights.exr"));
+}
+
 TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(run("").status, 2);
   EXPECT_EQ(run("frobnicate").status, 2);
