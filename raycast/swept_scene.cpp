@@ -81,7 +81,37 @@ double planeBoundOver(const TileBox& t, double x0, double y0, double x1, double 
   }
   return bound;
 }
-// Plane values are exact up to double round-off; this margin (mm) absorbs it.
+// The plane N . p = h_C(N) below a swept solid C, as z >= a + b x + c y (N.z < 0): it
+// bounds every height of C from below, everywhere.
+TilePlane planeBelow(const SweptSegment& seg, const Vec3& N) {
+  const double h = seg.support(N);
+  return {h / N.z, -N.x / N.z, -N.y / N.z};
+}
+
+// The plane to keep for a segment from its exact lowest point at (x, y). Where the
+// solid has a usable bottom there, its supporting plane. Where the line misses the
+// solid or meets its near-vertical side (the rim of the footprint), a steep plane
+// leaning outwards from the move, N = (d, -1e-3) with d the horizontal direction from
+// the nearest point of the move's tip path: it rises by 1 mm per um outside the
+// footprint, so cells beyond the rim are culled without an evaluation. Returns false
+// when neither applies (the point lies on the tip path itself).
+bool planeFrom(const SweptSegment& seg, const LowestPoint& lp, double x, double y,
+               TilePlane& plane) {
+  if (lp.hit && lp.normal.z <= -1e-3) {
+    plane = planeBelow(seg, lp.normal);
+    return true;
+  }
+  const Vec3 &a = seg.start(), &b = seg.end();
+  const double ux = b.x - a.x, uy = b.y - a.y, uu = ux * ux + uy * uy;
+  const double t = uu > 0 ? std::clamp(((x - a.x) * ux + (y - a.y) * uy) / uu, 0.0, 1.0) : 0.0;
+  const double dx = x - (a.x + t * ux), dy = y - (a.y + t * uy), dd = std::hypot(dx, dy);
+  if (!(dd > 1e-9)) return false;
+  plane = planeBelow(seg, normalize(Vec3{dx / dd, dy / dd, -1e-3}));
+  return true;
+}
+
+// Plane values are exact up to double round-off; this margin (mm) absorbs it. (Steep
+// planes have coefficients up to 1e3; their round-off stays below 1e-11 mm here.)
 double planeSlack(double v) {
   return 1e-9 * (1 + std::fabs(v));
 }
@@ -206,11 +236,8 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
         for (int s = 0; s < kSamplesPerTile; ++s) {
           const LowestPoint lp = seg.lowestPoint(sx[s], sy[s]);
           ++evalsPerSegment[k];
-          if (!lp.hit || lp.normal.z > -1e-3) continue;
-          const Vec3& N = lp.normal;
-          const double h = seg.support(N);
-          // N . p <= h on the solid, N.z < 0:  z >= (h - N.x x - N.y y) / N.z.
-          const TilePlane plane{h / N.z, -N.x / N.z, -N.y / N.z};
+          TilePlane plane;
+          if (!planeFrom(seg, lp, sx[s], sy[s], plane)) continue;
           t.plane[t.planes++] = plane;
           double planeMin = HUGE_VAL;
           for (int c = 0; c < 4; ++c)
@@ -370,39 +397,48 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
     SectionMemo* memo = cache ? &cache->memo[cand.segment % QueryCache::kSlots] : nullptr;
     ++evaluations;
     const LowestPoint lp = seg.lowestPoint(x, y, memo);
-    if (!lp.hit || lp.normal.z > -1e-3) continue;
-    // N . p <= h_C(N) on the solid, N.z < 0:  z >= (h - N.x x - N.y y) / N.z.
-    const Vec3& N = lp.normal;
-    const double h = seg.support(N);
-    cand.a = h / N.z, cand.b = -N.x / N.z, cand.c = -N.y / N.z;
+    TilePlane plane;
+    if (planeFrom(seg, lp, x, y, plane)) cand.a = plane.a, cand.b = plane.b, cand.c = plane.c;
   }
 }
 
 double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates, double x, double y,
-                                     double ceiling, uint64_t& evaluations,
-                                     QueryCache* cache) const {
-  // Branch and bound: every candidate's plane bound at (x, y) first, then exact
-  // evaluations in ascending order of bound, stopping at the first bound that cannot
-  // beat the best height found. The minimum does not depend on the order.
+                                     double ceiling, uint64_t& evaluations, QueryCache* cache,
+                                     uint32_t* hint) const {
+  // Branch and bound: every candidate's plane bound at (x, y) first; the hinted
+  // candidate is evaluated first, then the others in ascending order of bound,
+  // stopping at the first bound that cannot beat the best height found. Every
+  // candidate skipped has a bound, hence a height, at or above the returned one, so
+  // the minimum does not depend on the order or on the hint.
   thread_local std::vector<std::pair<double, uint32_t>> order;
   order.clear();
-  for (uint32_t k = 0; k < candidates.size(); ++k) {
-    const Candidate& cand = candidates[k];
-    const double bound =
-        std::max(planeBoundAt(impl_->tiles[cand.tile], x, y), cand.a + cand.b * x + cand.c * y);
-    const double safe = bound - planeSlack(bound);
-    if (safe < ceiling) order.emplace_back(safe, k);
-  }
-  std::sort(order.begin(), order.end());
   double best = ceiling;
-  for (const auto& [bound, k] : order) {
-    if (bound >= best) break;
+  uint32_t winner = UINT32_MAX;
+  auto evaluate = [&](uint32_t k) {
     const uint32_t segment = candidates[k].segment;
     ++evaluations;
     SectionMemo* memo = cache ? &cache->memo[segment % QueryCache::kSlots] : nullptr;
     const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, best);
-    if (lp.hit && lp.z < best) best = lp.z;
+    if (lp.hit && lp.z < best) best = lp.z, winner = k;
+  };
+  auto safeBound = [&](const Candidate& cand) {
+    const double bound =
+        std::max(planeBoundAt(impl_->tiles[cand.tile], x, y), cand.a + cand.b * x + cand.c * y);
+    return bound - planeSlack(bound);
+  };
+  const uint32_t first = hint && *hint < candidates.size() ? *hint : UINT32_MAX;
+  if (first != UINT32_MAX && safeBound(candidates[first]) < best) evaluate(first);
+  for (uint32_t k = 0; k < candidates.size(); ++k) {
+    if (k == first) continue;
+    const double bound = safeBound(candidates[k]);
+    if (bound < best) order.emplace_back(bound, k);
   }
+  std::sort(order.begin(), order.end());
+  for (const auto& [bound, k] : order) {
+    if (bound >= best) break;
+    evaluate(k);
+  }
+  if (hint) *hint = winner;
   return best;
 }
 

@@ -73,16 +73,15 @@ class SweptScene {
   void tightenCandidates(std::vector<Candidate>& candidates, double x, double y,
                          uint64_t& evaluations, QueryCache* cache = nullptr) const;
   // The lowest height at (x, y) among the candidates, or `ceiling`: the same value
-  // lowestHeight() returns for any (x, y) inside the gathered region.
+  // lowestHeight() returns for any (x, y) inside the gathered region. `hint`, if given,
+  // names a candidate (index) to evaluate first, typically the previous cell's winner:
+  // its height, found first, prunes the others by their bounds; on return it holds the
+  // index of the winner (UINT32_MAX if the ceiling was not beaten). The height does not
+  // depend on the hint, only the number of evaluations does.
   double lowestHeightAmong(const std::vector<Candidate>& candidates, double x, double y,
-                           double ceiling, uint64_t& evaluations,
-                           QueryCache* cache = nullptr) const;
+                           double ceiling, uint64_t& evaluations, QueryCache* cache = nullptr,
+                           uint32_t* hint = nullptr) const;
   double regionHalfSize() const { return regionHalfSize_; }
-  // The lowest height at (x, y) among the candidates, or `ceiling`: the same value
-  // lowestHeight() returns for any (x, y) inside the gathered region.
-  double lowestHeightAmong(const std::vector<uint32_t>& candidates, double x, double y,
-                           double ceiling, uint64_t& evaluations,
-                           QueryCache* cache = nullptr) const;
 
   const std::vector<SweptSegment>& segments() const;
   const SceneStats& stats() const;

@@ -50,10 +50,19 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
   // plane that saves many per cell. With few, the tile planes do.
   if (candidates.size() > 4)
     scene.tightenCandidates(candidates, 0.5 * (x0 + x1), 0.5 * (y0 + y1), evals, &cache);
-  for (int64_t j = j0; j < j1; ++j)
-    for (int64_t i = i0; i < i1; ++i)
+  // Neighbouring cells mostly share their winner: each cell tries its left neighbour's
+  // (or, first in a row, the one below) first, whose height then prunes the others.
+  uint32_t rowStart = UINT32_MAX;
+  for (int64_t j = j0; j < j1; ++j) {
+    uint32_t hint = rowStart;
+    for (int64_t i = i0; i < i1; ++i) {
+      const uint32_t tried = hint;
       map.at(i, j) = scene.lowestHeightAmong(candidates, g.cellCentreX(i), g.cellCentreY(j),
-                                             map.at(i, j), evals, &cache);
+                                             map.at(i, j), evals, &cache, &hint);
+      if (hint == UINT32_MAX) hint = tried;  // the ceiling held: keep the old guess
+      if (i == i0) rowStart = hint;
+    }
+  }
 }
 
 }  // namespace

@@ -216,6 +216,32 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
   // Numerical Recipes' rtsafe): a step that leaves the bracket, a non-positive slope,
   // or a step that does not at least halve the previous one falls back to bisection, so
   // jumps of the support point (flat faces) are still found.
+  // The cylinder's side is a ruled face: where the direction turns through v . a = 0
+  // the support point jumps from the bottom rim (s = r) up the side line to the top rim
+  // (s = L). If P crosses that side line, the jump is the root and the answer is the
+  // crossing itself, found in closed form instead of by bisecting down to the jump.
+  {
+    // v(t) . a = 0:  -(n.a) t^2 + 2 (m.a) t + (n.a) = 0; the roots' product is -1, so
+    // at most one lies inside (-1, 1): t = (m.a - sqrt((m.a)^2 + (n.a)^2)) / (n.a),
+    // written without cancellation.
+    const double na = dot(n, axis_), ma = dot(m, axis_);
+    const double q = ma + std::copysign(std::hypot(ma, na), ma);
+    const double ts = q != 0 ? -na / q : 2.0;
+    if (ts > th1 && ts < th2 && ma != 0) {
+      const Vec3 v = direction(ts);
+      const Vec3 e = normalize(v - axis_ * dot(v, axis_));
+      // The side line a s + e R crosses P where s = (c - R (m . e)) / (m . a).
+      const double s = (c - cutter_.radius * dot(m, e)) / ma;
+      if (s >= cutter_.cornerRadius && s <= cutter_.fluteLength) {
+        out.hit = true;
+        out.point = axis_ * s + e * cutter_.radius;
+        out.point -= m * (dot(out.point, m) - c);  // onto P to round-off
+        out.normal = e;
+        if (root) *root = ts;
+        return out;
+      }
+    }
+  }
   const double tol = 1e-14 * (cutter_.radius + cutter_.fluteLength);
   double stepBefore = th2 - th1;
   for (int iter = 0; iter < 200 && th2 - th1 > 1e-16; ++iter) {
