@@ -194,8 +194,12 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
     if (box.min.z >= stockTop) return;  // never below the stock top: cannot cut
     // Tiles of R/8 keep the box bounds tight on long moves; a short move gets at most
     // ~kMaxTiles tiles, since bounding costs 5 exact evaluations a tile and the
-    // per-cell plane test keeps the culling sharp anyway.
-    constexpr double kMaxTiles = 64;
+    // per-cell plane test keeps the culling sharp anyway. Moves shorter than the
+    // cutter radius (CAM paths: thousands overlap each cell) get 16: measured on B3,
+    // 4x less build time and no more evaluations per cell than with 64; B1's long
+    // passes keep 64 (with 16 they need 30% more evaluations per cell).
+    const double moveLength = length(seg.end() - seg.start());
+    const double kMaxTiles = moveLength < seg.cutter().radius ? 16 : 64;
     const double area = (box.max.x - box.min.x) * (box.max.y - box.min.y);
     const double T = options.tileSize > 0
                          ? options.tileSize
@@ -421,9 +425,12 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates, d
     const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, best);
     if (lp.hit && lp.z < best) best = lp.z, winner = k;
   };
+  // The candidate's own plane (from the region's centre) is usually the tightest and
+  // alone often prunes it; the tile's planes are consulted only when it does not.
   auto safeBound = [&](const Candidate& cand) {
-    const double bound =
-        std::max(planeBoundAt(impl_->tiles[cand.tile], x, y), cand.a + cand.b * x + cand.c * y);
+    double bound = cand.a + cand.b * x + cand.c * y;
+    if (bound - planeSlack(bound) < best)
+      bound = std::max(bound, planeBoundAt(impl_->tiles[cand.tile], x, y));
     return bound - planeSlack(bound);
   };
   const uint32_t first = hint && *hint < candidates.size() ? *hint : UINT32_MAX;

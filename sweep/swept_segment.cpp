@@ -209,7 +209,7 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
   const Vec3& m = m_;
   auto direction = [&](double t) { return n * (1 - t * t) + m * (2 * t); };
   Section out;
-  double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
+  const double thStart1 = th1, thStart2 = th2;  // x1, x2 belong to these
 
   // Root of the monotone f(t) = x_K(t) . m - c by Newton's method with the analytic
   // slope of the support point, safeguarded by the bracket [th1, th2] (as in
@@ -242,19 +242,67 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
       }
     }
   }
-  const double tol = 1e-14 * (cutter_.radius + cutter_.fluteLength);
+  // f(t) and its slope in closed form. n and m are orthonormal, so |v(t)| = 1 + t^2,
+  // and the radial part v - a (v . a) of v(t) has the m-component Pm(t) and the squared
+  // length Q(t), both polynomials in t (below, with na = n . a, ma = m . a):
+  //   v . a = (1 - t^2) na + 2 t ma,   Pm = (1 - t^2) B + 2 t C,
+  //   Q = (1 - t^2)^2 (1 - na^2) + 4 t (1 - t^2) B + 4 t^2 C,  B = -na ma, C = 1 - ma^2.
+  // With g = Pm / sqrt(Q) = e . m, the support points of supportWithSlope give
+  //   top rim (v . a > 0):  f = L ma + R g - c
+  //   torus   (v . a <= 0): f = r ma + Rb g + r 2t / (1 + t^2) - c.
+  // Near an axial direction (Q -> 0) the vector form is used instead.
+  const double r = cutter_.cornerRadius, L = cutter_.fluteLength, R = cutter_.radius;
+  const double Rb = cutter_.bottomRadius();
+  const double na = dot(n, axis_), ma = dot(m, axis_);
+  const double A = 1 - na * na, B = -na * ma, C = 1 - ma * ma;
+  auto offsetAndSlope = [&](double t, double& f, double& slope) {
+    const double u = 1 - t * t;
+    const double Q = u * u * A + 4 * t * u * B + 4 * t * t * C;
+    if (Q > 1e-20) {
+      const double Pm = u * B + 2 * t * C, dPm = -2 * t * B + 2 * C;
+      const double dQ = -4 * t * u * A + (4 - 12 * t * t) * B + 8 * t * C;
+      const double sq = std::sqrt(Q);
+      const double g = Pm / sq, dg = (dPm - 0.5 * Pm * dQ / Q) / sq;
+      if (u * na + 2 * t * ma > 0) {
+        f = L * ma + R * g - c;
+        slope = R * dg;
+      } else {
+        const double w = 1 / (1 + t * t);
+        f = r * ma + Rb * g + 2 * r * t * w - c;
+        slope = Rb * dg + 2 * r * u * w * w;
+      }
+      return;
+    }
+    const SupportWithSlope sw =
+        supportWithSlope(cutter_, axis_, direction(t), n * (-2 * t) + m * 2);
+    f = dot(sw.point, m) - c;
+    slope = dot(sw.slope, m);
+  };
+  // The support point at t, on the same side of a jump as offsetAndSlope decided (at
+  // v . a ~ 0 the vector form may round the other way).
+  auto supportAt = [&](double t) {
+    const double u = 1 - t * t;
+    const Vec3 v = direction(t);
+    if (u * u * A + 4 * t * u * B + 4 * t * t * C <= 1e-20) return cutterSupport(cutter_, axis_, v);
+    const Vec3 e = normalize(v - axis_ * dot(v, axis_));
+    return u * na + 2 * t * ma > 0 ? axis_ * L + e * R : axis_ * r + e * Rb + v * (r / (1 + t * t));
+  };
+  // ... moved onto P (it is on P to round-off when f(t) ~ 0).
+  auto pointOnP = [&](double t) {
+    const Vec3 p = supportAt(t);
+    return p - m * (dot(p, m) - c);
+  };
+
+  const double tol = 1e-14 * (R + L);
   double stepBefore = th2 - th1;
   for (int iter = 0; iter < 200 && th2 - th1 > 1e-16; ++iter) {
-    const Vec3 v = direction(th);
-    const Vec3 dv = n * (-2 * th) + m * 2;
-    const SupportWithSlope sw = supportWithSlope(cutter_, axis_, v, dv);
-    const double fm = dot(sw.point, m) - c;
-    const double slope = dot(sw.slope, m);
+    double fm, slope;
+    offsetAndSlope(th, fm, slope);
     const bool converged = std::fabs(fm) <= tol;
     if (fm < 0) {
-      th1 = th, x1 = sw.point, f1 = fm;
+      th1 = th;
     } else {
-      th2 = th, x2 = sw.point, f2 = fm;
+      th2 = th;
     }
     const double newton = slope > 0 ? fm / slope : HUGE_VAL;
     double step;
@@ -267,8 +315,8 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
     if (converged || (std::fabs(newton) <= 1e-16 && std::fabs(fm) <= 1e3 * tol)) {
       // On P to round-off (or Newton has stalled there): move it onto P exactly.
       out.hit = true;
-      out.point = sw.point - m * fm;
-      out.normal = normalize(v);
+      out.point = pointOnP(th);
+      out.normal = normalize(direction(th));
       if (root) *root = th;
       return out;
     }
@@ -278,6 +326,9 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
   // The bracket closed on a jump of the support point: a flat face (the bottom disk,
   // the top disk or a side line). The chord between the two bracketing support points
   // lies on that face, which is the support set, and crosses P.
+  if (th1 != thStart1) x1 = supportAt(th1);
+  if (th2 != thStart2) x2 = supportAt(th2);
+  const double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
   const double lam = f2 > f1 ? -f1 / (f2 - f1) : 0.0;
   out.hit = true;
   out.point = x1 + (x2 - x1) * lam;
