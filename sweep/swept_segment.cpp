@@ -105,11 +105,12 @@ Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
   return supportWithSlope(c, a, dir, Vec3{}).point;
 }
 
-LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y) {
+LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y, double zBelow) {
   const double r = c.cornerRadius, L = c.fluteLength;
-  // Start below the lowest point of K, where Phi > 0 and (if l hits K) decreasing.
+  // Start below the lowest point of K, where Phi > 0 and (if l hits K) decreasing; or,
+  // nearer, just below the caller's proven bound.
   const double zMin = cutterSupport(c, a, Vec3{0, 0, -1}).z;
-  double z = zMin - 1e-3 * c.radius - 1e-9;
+  double z = std::max(zMin - 1e-3 * c.radius - 1e-9, zBelow - 1e-9 * (1 + std::fabs(zBelow)));
 
   LowestPoint out;
   // The gradient at the last iterate outside K: a valid outward normal in the limit.
@@ -225,7 +226,7 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
     // at most one lies inside (-1, 1): t = (m.a - sqrt((m.a)^2 + (n.a)^2)) / (n.a),
     // written without cancellation.
     const double na = dot(n, axis_), ma = dot(m, axis_);
-    const double q = ma + std::copysign(std::hypot(ma, na), ma);
+    const double q = ma + std::copysign(std::sqrt(ma * ma + na * na), ma);
     const double ts = q != 0 ? -na / q : 2.0;
     if (ts > th1 && ts < th2 && ma != 0) {
       const Vec3 v = direction(ts);
@@ -399,14 +400,17 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, dou
   const double envelopeZ = start_.z + sec.point.z + (u0 - vs) * sigma_;
   if (envelopeZ >= cutoff) return {};
 
-  // Step 2: clamp the envelope point to the move.
+  // Step 2: clamp the envelope point to the move. The section's lower boundary is
+  // convex, so it lies above its tangent of slope sigma at the support point: the end
+  // cases are no lower than envelopeZ, and their Newton search starts there.
   if (vs > u0) {  // the minimiser lies before the start: the cutter at t = 0
-    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy);
+    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy, envelopeZ - start_.z);
     lp.z += start_.z;
     return lp;
   }
   if (vs < u0 - w_) {  // beyond the end: the cutter at t = 1
-    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx - delta_.x, qy - delta_.y);
+    LowestPoint lp =
+        cutterLowestPoint(cutter_, axis_, qx - delta_.x, qy - delta_.y, envelopeZ - end_.z);
     lp.z += end_.z;
     return lp;
   }

@@ -81,7 +81,7 @@ class SweptSegment {
   double w_ = 0, sigma_ = 0;
   Vec3 uHat_, m_, n_, lowM_, highM_;
   // Section roots (parameter and support point) at evenly spaced offsets across K.
-  static constexpr int kSectionNodes = 9;
+  static constexpr int kSectionNodes = 17;
   struct SectionNode {
     double t = 0;
     Vec3 point;
@@ -95,7 +95,9 @@ class SweptSegment {
 Vec3 cutterSupport(const Cutter& cutter, const Vec3& axis, const Vec3& dir);
 
 // Exact lowest point of the stationary cutter (tip at origin) on the vertical line
-// through (x, y). Exposed for tests and for the stamping baseline.
-LowestPoint cutterLowestPoint(const Cutter& cutter, const Vec3& axis, double x, double y);
+// through (x, y). Exposed for tests and for the stamping baseline. `zBelow`, if given,
+// must be a proven lower bound of the answer; the search then starts there.
+LowestPoint cutterLowestPoint(const Cutter& cutter, const Vec3& axis, double x, double y,
+                              double zBelow = -HUGE_VAL);
 
 }  // namespace scallop
