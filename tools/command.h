@@ -31,5 +31,7 @@ Command addIntervalCommand(CLI::App& parent, CommonOptions& common);
 Command addValidateCommand(CLI::App& parent, CommonOptions& common);
 Command addBenchCommand(CLI::App& parent, CommonOptions& common);
 Command addMergeCommand(CLI::App& parent, CommonOptions& common);
+Command addStatsCommand(CLI::App& parent, CommonOptions& common);
+Command addExportCommand(CLI::App& parent, CommonOptions& common);
 
 }  // namespace scallop

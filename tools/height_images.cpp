@@ -128,6 +128,14 @@ double metresPerUnit(const std::string& path, const std::string& key, const std:
 
 constexpr double kMetrePerMm = 1e-3;
 
+// A height map has a height in every cell: NaN (Gwyddion's masked points) or inf is
+// refused rather than let into the statistics.
+InputError nonFiniteHeight(const std::string& path, int64_t row, int64_t column) {
+  return InputError(path, fmt::format("the height at image row {}, column {} is not a finite "
+                                      "number; a height map needs a height in every cell",
+                                      row, column));
+}
+
 OIIO::ImageSpec exrSpec(const GridSpec& g) {
   OIIO::ImageSpec spec(int(g.nx), int(g.ny), 1, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"Z"};
@@ -210,8 +218,11 @@ ZMap readHeightsExr(const std::string& path) {
     throw InputError(path, "cannot read image: " + in->geterror());
   ZMap map(g, 0.0);
   for (int64_t row = 0; row < g.ny; ++row)
-    for (int64_t i = 0; i < g.nx; ++i)
-      map.at(i, g.ny - 1 - row) = double(pixels[size_t(row * g.nx + i)]);
+    for (int64_t i = 0; i < g.nx; ++i) {
+      const float z = pixels[size_t(row * g.nx + i)];
+      if (!std::isfinite(z)) throw nonFiniteHeight(path, row, i);
+      map.at(i, g.ny - 1 - row) = double(z);
+    }
   return map;
 }
 
@@ -280,6 +291,8 @@ ZMap readHeightsGsf(const std::string& path) {
   const double yreal = parseGsfNumber(path, keys, "YReal", 1.0) * xyScale;
   g.originX = parseGsfNumber(path, keys, "XOffset", 0.0) * xyScale;
   g.originY = parseGsfNumber(path, keys, "YOffset", 0.0) * xyScale;
+  if (!(xreal > 0) || !(yreal > 0))
+    throw InputError(path, "header fields XReal and YReal must be positive lengths");
   g.spacing = xreal / double(g.nx);
   const double dy = yreal / double(g.ny);
   if (!(g.spacing > 0) || std::abs(dy - g.spacing) > 1e-9 * g.spacing)
@@ -295,8 +308,11 @@ ZMap readHeightsGsf(const std::string& path) {
   ZMap map(g, 0.0);
   const unsigned char* p = bytes.data() + dataStart;
   for (int64_t row = 0; row < g.ny; ++row)
-    for (int64_t i = 0; i < g.nx; ++i, p += 4)
-      map.at(i, g.ny - 1 - row) = double(getFloatLE(p)) * zScale;
+    for (int64_t i = 0; i < g.nx; ++i, p += 4) {
+      const float z = getFloatLE(p);
+      if (!std::isfinite(z)) throw nonFiniteHeight(path, row, i);
+      map.at(i, g.ny - 1 - row) = double(z) * zScale;
+    }
   return map;
 }
 

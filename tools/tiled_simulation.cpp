@@ -24,6 +24,7 @@
 #include "tools/job.h"
 #include "tools/progress.h"
 #include "tools/simulate_command.h"
+#include "tools/stats_command.h"
 
 namespace scallop {
 
@@ -262,6 +263,7 @@ void TiledOutput::add(const ZMap& band, const json& stats) {
       double& z = preview_.at(i / poolFactor_, (j0 + j) / poolFactor_);
       z = std::min(z, band.at(i, j));
     }
+  moments_.add(residualMoments(band, wholeMap(band.grid()), LevelPlane()));
   writeSeconds_ += secondsSince(t0);
   zMin_ = std::min(zMin_, stats.at("min_height").get<double>());
   zMax_ = std::max(zMax_, stats.at("max_height").get<double>());
@@ -314,6 +316,16 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
                {"mcells_per_s", castSeconds_ > 0 ? cells / castSeconds_ / 1e6 : 0.0}};
   meas.update(raster_);
   r["measurements"] = meas;
+  // Bands cannot be read twice: unlevelled (heights from the mean), and without Sa,
+  // which needs the mean before the pass (analysis/surface_metrology.h).
+  SurfaceStats surface =
+      statsFromMoments(moments_, LevelPlane(), grid_.spacing * grid_.spacing, false);
+  surface.levelling = Levelling::kNone;
+  r["surface_stats"] = surfaceStatsJson(surface);
+  r["surface_stats"]["notes"] =
+      r["surface_stats"]["notes"].get<std::string>() +
+      "; computed band by band: heights from the mean (no plane levelling) and no Sa. "
+      "`scallop stats heights.gsf` gives all of them from the file";
   r["tiled"] = {{"bands", run_.at("bands")},
                 {"band_rows", run_.at("band_rows")},
                 {"exr_tile_rows", run_.at("exr_tile_rows")}};

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "analysis/surface_metrology.h"
 #include "raycast/zmap.h"
 #include "tools/height_images.h"
 
@@ -73,6 +74,7 @@ class TiledOutput {
   double zMin_ = HUGE_VAL, zMax_ = -HUGE_VAL, castSeconds_ = 0, writeSeconds_ = 0;
   double evaluations_ = 0;
   nlohmann::json raster_;
+  HeightMoments moments_;  // raw heights of the bands so far, merged in band order
 };
 
 // The grid stored in a run description, and back.
