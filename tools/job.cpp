@@ -3,11 +3,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "sweep/input_error.h"
+#include "tools/stl_io.h"
 #include "tools/tool_path_file.h"
 
 namespace scallop {
@@ -17,6 +20,40 @@ using nlohmann::json;
 namespace {
 
 // --- Strict field access: every message names the field and what it should be. ----
+
+// Every number of a job is a length in mm, an angle in degrees or a tolerance: none is
+// meaningful beyond 1 km, and bounding them keeps squares and products (and the
+// float32 heights written) far from overflow, where a wrong map would be silent.
+constexpr double kMaxMagnitude = 1e6;
+
+// Rejects an object holding the same key twice (JSON allows it, nlohmann keeps the
+// last silently), naming the field path, e.g. "grid.spacing: duplicate key".
+struct OpenObjects {
+  std::vector<std::pair<std::string, std::set<std::string>>> stack;  // field path, keys seen
+  std::string lastKey;
+};
+
+json::parser_callback_t duplicateKeyCheck(OpenObjects& open) {
+  return [&open](int /*depth*/, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      const std::string parent = open.stack.empty() ? "" : open.stack.back().first;
+      open.stack.push_back({parent.empty() ? open.lastKey : parent + "." + open.lastKey, {}});
+      open.lastKey.clear();
+    } else if (event == json::parse_event_t::object_end) {
+      if (!open.stack.empty()) open.stack.pop_back();
+    } else if (event == json::parse_event_t::key && !open.stack.empty()) {
+      open.lastKey = parsed.get<std::string>();
+      if (!open.stack.back().second.insert(open.lastKey).second) {
+        const std::string& obj = open.stack.back().first;
+        throw InputError(obj.empty() ? open.lastKey : obj + "." + open.lastKey,
+                         "duplicate key; each key may appear once per object");
+      }
+    } else if (event == json::parse_event_t::array_start) {
+      open.lastKey += "[]";
+    }
+    return true;
+  };
+}
 
 const json& requireObject(const json& parent, const std::string& key, const std::string& field) {
   if (!parent.contains(key)) throw InputError(field, "missing; expected an object");
@@ -46,6 +83,8 @@ double number(const json& obj, const std::string& key, const std::string& field,
   if (!v.is_number()) throw InputError(field, "expected a number, got " + v.dump());
   const double d = v.get<double>();
   if (!std::isfinite(d)) throw InputError(field, "expected a finite number");
+  if (std::fabs(d) > kMaxMagnitude)
+    throw InputError(field, "must be within +-1e6 (mm: 1 km), got " + v.dump());
   return d;
 }
 
@@ -56,6 +95,8 @@ Vec3 point(const json& obj, const std::string& key, const std::string& field) {
     throw InputError(field, "expected [x, y, z] (three numbers, mm), got " + v.dump());
   const Vec3 p{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
   if (!isFinite(p)) throw InputError(field, "coordinates must be finite");
+  if (std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))) > kMaxMagnitude)
+    throw InputError(field, "coordinates must be within +-1e6 mm (1 km), got " + v.dump());
   return p;
 }
 
@@ -142,10 +183,7 @@ GridSpec Job::grid() const {
   return gridCovering(stock.min.x, stock.min.y, stock.max.x, stock.max.y, spacing);
 }
 
-void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
-  // Heights are held in double, plus one float32 row buffer per image while writing.
-  const double cells = double(grid.nx) * double(grid.ny);
-  const double need = cells * (sizeof(double) + sizeof(float));
+double availableMemoryBytes() {
   double available = 0;
   std::ifstream meminfo("/proc/meminfo");
   std::string key;
@@ -153,21 +191,75 @@ void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
   std::string unit;
   while (meminfo >> key >> kb >> unit)
     if (key == "MemAvailable:") available = kb * 1024;
-  if (available <= 0) available = 8.0 * (1ull << 30);
+  return available > 0 ? available : 8.0 * (1ull << 30);
+}
+
+void checkSceneFitsMemory(const Job& job) {
+  // The culling scene (raycast/swept_scene.cpp) cuts each move's xy box into tiles of
+  // side T = max(R/8, sqrt(area/64)) and keeps those the cutter reaches below the
+  // stock top. Measured (1e6 short 3-axis moves, ball R = 1: 33.8e6 tiles, 18.5 GB
+  // peak): ~500 bytes a tile (box, planes, Embree BVH) and about half the tile grid
+  // kept; plus the move, its swept segment and its file line. An estimate, used only
+  // to refuse what clearly cannot run; moves that turn the axis are subdivided into
+  // more segments than counted here, so it errs low, never high.
+  constexpr double kBytesPerTile = 500, kTilesKept = 0.5, kBytesPerMove = 400;
+  const double R = job.cutter.radius, flute = job.cutter.fluteLength;
+  const double top = job.stock.max.z;
+  double need = 0;
+  size_t moves = 0;
+  for (const Move& m : job.path.moves) {
+    if (m.rapid || std::fmin(m.from.tip.z, m.to.tip.z) - R - flute >= top) continue;
+    const double lean =
+        std::fmax(std::hypot(m.from.axis.x, m.from.axis.y), std::hypot(m.to.axis.x, m.to.axis.y));
+    const double reach = 2 * (R + flute * lean);
+    const double w = std::fabs(m.to.tip.x - m.from.tip.x) + reach;
+    const double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
+    const double T = std::fmax(R / 8, std::sqrt(w * h / 64));
+    need += kBytesPerMove + kTilesKept * kBytesPerTile * std::ceil(w / T) * std::ceil(h / T);
+    ++moves;
+  }
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg << "the exact simulation of " << moves << " cutting moves needs about " << std::fixed
+        << std::setprecision(0) << need << " bytes (" << std::setprecision(1)
+        << need / double(1ull << 30) << " GiB) of memory for its culling scene, but only "
+        << available / double(1ull << 30)
+        << " GiB are available; split the path into several jobs (--tiled bounds only the "
+           "height map's memory, not the scene's)";
+    throw InputError(job.source + ": path", msg.str());
+  }
+}
+
+void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
+  // Heights are held in double, plus one float32 row buffer per image while writing.
+  const double cells = double(grid.nx) * double(grid.ny);
+  const double need = cells * (sizeof(double) + sizeof(float));
+  const double available = availableMemoryBytes();
   if (need > 0.8 * available) {
     std::ostringstream msg;
     msg.precision(3);
     msg << "a " << grid.nx << " x " << grid.ny << " grid needs " << need / double(1ull << 30)
-        << " GiB of memory, but only " << available / double(1ull << 30)
-        << " GiB are available; use a larger spacing or a smaller stock";
+        << " GiB (" << std::fixed << std::setprecision(0) << need << " bytes) of memory, but only "
+        << std::defaultfloat << std::setprecision(3) << available / double(1ull << 30)
+        << " GiB are available; use a larger spacing, a smaller stock, or --method exact with "
+           "--tiled (bands of rows, bounded memory)";
     throw InputError(field, msg.str());
   }
 }
 
-Job parseJob(const std::string& textIn, const std::string& source, bool checkMemory) {
+Job parseJob(const std::string& textIn, const std::string& source, bool checkMemory,
+             const std::string& pathOverride) {
   json doc;
+  OpenObjects openObjects;
   try {
-    doc = json::parse(textIn);
+    doc = json::parse(textIn, duplicateKeyCheck(openObjects));
+  } catch (const InputError& e) {
+    throw InputError(source + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
+  } catch (const json::out_of_range& e) {  // a number beyond double, e.g. 1e400
+    std::string reason = e.what();
+    reason = reason.substr(reason.find(']') + 2);
+    throw InputError(source, "malformed JSON: " + reason);
   } catch (const json::parse_error& e) {
     std::string reason = e.what();
     const size_t colon = reason.find("]: ");
@@ -178,10 +270,18 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
   if (!doc.is_object()) throw InputError(source, "expected a JSON object at the top level");
 
   try {
-    rejectUnknownKeys(doc, {"tool", "stock", "grid", "path", "sweep"}, "");
+    rejectUnknownKeys(doc, {"tool", "stock", "grid", "path", "sweep", "design"}, "");
     Job job;
     job.source = source;
-    job.cutter = parseTool(requireObject(doc, "tool", "tool"));
+    // Without "tool" the path file's CUTTER/ statement defines it (below).
+    if (doc.contains("tool")) job.cutter = parseTool(requireObject(doc, "tool", "tool"));
+    namespace fs = std::filesystem;
+    auto besideJob = [&](const std::string& file) {
+      fs::path p(file);
+      if (p.is_relative() && source.find('/') != std::string::npos)
+        p = fs::path(source).parent_path() / p;
+      return p.string();
+    };
 
     const json& stock = requireObject(doc, "stock", "stock");
     rejectUnknownKeys(stock, {"min", "max"}, "stock");
@@ -207,22 +307,48 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
       if (job.axisTolerance <= 0) throw InputError("sweep.axis_tolerance", "must be > 0 mm");
     }
 
-    const json& path = requireObject(doc, "path", "path");
+    if (doc.contains("design")) {
+      const json& design = requireObject(doc, "design", "design");
+      rejectUnknownKeys(design, {"stl", "gouge_tolerance"}, "design");
+      job.designFile = besideJob(text(design, "stl", "design.stl"));
+      job.gougeTolerance =
+          number(design, "gouge_tolerance", "design.gouge_tolerance", &job.gougeTolerance);
+      if (job.gougeTolerance < 0) throw InputError("design.gouge_tolerance", "must be >= 0 mm");
+      job.design = std::make_shared<const TriangleMesh>(readStl(job.designFile));
+    }
+
+    const json pathDoc =
+        pathOverride.empty() ? requireObject(doc, "path", "path") : json{{"file", pathOverride}};
+    const json& path = pathDoc;
     rejectUnknownKeys(path, {"raster", "file"}, "path");
     if (path.contains("raster") == path.contains("file"))
       throw InputError("path", "expected exactly one of \"raster\" or \"file\"");
+    if (path.contains("raster") && !doc.contains("tool"))
+      throw InputError("tool", "missing; expected an object");
     if (path.contains("raster")) {
       job.isRaster = true;
       job.raster = parseRaster(requireObject(path, "raster", "path.raster"));
       job.path = makeRaster(job.cutter, job.stock, job.raster);
     } else {
       const std::string file = text(path, "file", "path.file");
-      namespace fs = std::filesystem;
-      fs::path p(file);
-      if (p.is_relative() && source.find('/') != std::string::npos)
-        p = fs::path(source).parent_path() / p;
-      job.pathFile = p.string();
-      job.path = readToolPathFile(job.pathFile);
+      // --path names a file from the working directory, a job's file is beside the job.
+      job.pathFile = pathOverride.empty() ? besideJob(file) : file;
+      ToolPathFile read = readToolPathFile(job.pathFile);
+      if (!doc.contains("tool") && !read.cutter)
+        throw InputError(
+            "tool", "missing; expected an object (or a CUTTER/ statement in " + job.pathFile + ")");
+      if (!doc.contains("tool")) job.cutter = *read.cutter;
+      if (doc.contains("tool") && read.cutter &&
+          (read.cutter->type != job.cutter.type || read.cutter->radius != job.cutter.radius ||
+           read.cutter->cornerRadius != job.cutter.cornerRadius))
+        read.warnings.add(job.pathFile,
+                          "its CUTTER/ differs from the job's \"tool\"; the job's "
+                          "tool is used");
+      warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile);
+      job.path = std::move(read.path);
+      job.moveLines = std::move(read.moveLines);
+      job.pathWarnings = std::move(read.warnings);
+      job.pathFormat = read.format;
     }
     return job;
   } catch (const InputError& e) {
@@ -232,12 +358,15 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
   }
 }
 
-Job loadJobFile(const std::string& path, bool checkMemory) {
+Job loadJobFile(const std::string& path, bool checkMemory, const std::string& pathOverride) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, "is a folder, expected a job file (JSON)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the job file");
   std::ostringstream text;
   text << in.rdbuf();
-  return parseJob(text.str(), path, checkMemory);
+  return parseJob(text.str(), path, checkMemory, pathOverride);
 }
 
 json jobToJson(const Job& job) {
@@ -262,8 +391,10 @@ json jobToJson(const Job& job) {
                      {"zigzag", r.zigzag},
                      {"segment_length", r.segmentLength}}}};
   } else {
-    out["path"] = {{"file", job.pathFile}};
+    out["path"] = {{"file", job.pathFile}, {"format", job.pathFormat}};
   }
+  if (job.design)
+    out["design"] = {{"stl", job.designFile}, {"gouge_tolerance", job.gougeTolerance}};
   return out;
 }
 

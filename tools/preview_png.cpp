@@ -1,9 +1,7 @@
 // preview.png: a shaded, colour-mapped picture of a ZMap with a colour bar and a
 // scale bar (declared in height_images.h).
 //
-// Text uses a built-in 5x7 bitmap font rather than OpenImageIO's render_text, which
-// needs FreeType and a font file that CI machines may not have.
-#include <OpenImageIO/imageio.h>
+// Canvas, font and PNG writing are in tools/png_canvas.h.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,136 +14,25 @@
 #include "sweep/input_error.h"
 #include "tools/atomic_file.h"
 #include "tools/height_images.h"
+#include "tools/png_canvas.h"
 
 namespace scallop {
 
 namespace {
 
-struct Rgb {
-  uint8_t r, g, b;
-};
+using png::Canvas;
+using png::formatValue;
+using png::kBackground;
+using png::kFrame;
+using png::kGlyphH;
+using png::kInk;
+using png::kMicro;
+using png::niceBelow;
+using png::Rgb;
+using png::textWidth;
+using png::writePng;
 
-constexpr Rgb kBackground{255, 255, 255};
-constexpr Rgb kInk{25, 25, 25};
-constexpr Rgb kFrame{90, 90, 90};
-
-// Stands for the micro sign in label strings (the font is single-byte).
-constexpr char kMicro = '\x01';
-
-// 5x7 glyphs, one byte per row from the top, bit 4 = leftmost column.
-struct Glyph {
-  char code;
-  uint8_t rows[7];
-};
-
-constexpr Glyph kFont[] = {
-    {'0', {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}},
-    {'1', {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E}},
-    {'2', {0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F}},
-    {'3', {0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E}},
-    {'4', {0x02, 0x06, 0x0A, 0x12, 0x1F, 0x02, 0x02}},
-    {'5', {0x1F, 0x10, 0x1E, 0x01, 0x01, 0x11, 0x0E}},
-    {'6', {0x06, 0x08, 0x10, 0x1E, 0x11, 0x11, 0x0E}},
-    {'7', {0x1F, 0x01, 0x02, 0x04, 0x08, 0x08, 0x08}},
-    {'8', {0x0E, 0x11, 0x11, 0x0E, 0x11, 0x11, 0x0E}},
-    {'9', {0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C}},
-    {'A', {0x0E, 0x11, 0x11, 0x11, 0x1F, 0x11, 0x11}},
-    {'B', {0x1E, 0x11, 0x11, 0x1E, 0x11, 0x11, 0x1E}},
-    {'C', {0x0E, 0x11, 0x10, 0x10, 0x10, 0x11, 0x0E}},
-    {'D', {0x1C, 0x12, 0x11, 0x11, 0x11, 0x12, 0x1C}},
-    {'E', {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x1F}},
-    {'F', {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x10}},
-    {'G', {0x0E, 0x11, 0x10, 0x17, 0x11, 0x11, 0x0F}},
-    {'H', {0x11, 0x11, 0x11, 0x1F, 0x11, 0x11, 0x11}},
-    {'I', {0x0E, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E}},
-    {'J', {0x07, 0x02, 0x02, 0x02, 0x02, 0x12, 0x0C}},
-    {'K', {0x11, 0x12, 0x14, 0x18, 0x14, 0x12, 0x11}},
-    {'L', {0x10, 0x10, 0x10, 0x10, 0x10, 0x10, 0x1F}},
-    {'M', {0x11, 0x1B, 0x15, 0x15, 0x11, 0x11, 0x11}},
-    {'N', {0x11, 0x11, 0x19, 0x15, 0x13, 0x11, 0x11}},
-    {'O', {0x0E, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E}},
-    {'P', {0x1E, 0x11, 0x11, 0x1E, 0x10, 0x10, 0x10}},
-    {'Q', {0x0E, 0x11, 0x11, 0x11, 0x15, 0x12, 0x0D}},
-    {'R', {0x1E, 0x11, 0x11, 0x1E, 0x14, 0x12, 0x11}},
-    {'S', {0x0F, 0x10, 0x10, 0x0E, 0x01, 0x01, 0x1E}},
-    {'T', {0x1F, 0x04, 0x04, 0x04, 0x04, 0x04, 0x04}},
-    {'U', {0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E}},
-    {'V', {0x11, 0x11, 0x11, 0x11, 0x11, 0x0A, 0x04}},
-    {'W', {0x11, 0x11, 0x11, 0x15, 0x15, 0x15, 0x0A}},
-    {'X', {0x11, 0x11, 0x0A, 0x04, 0x0A, 0x11, 0x11}},
-    {'Y', {0x11, 0x11, 0x11, 0x0A, 0x04, 0x04, 0x04}},
-    {'Z', {0x1F, 0x01, 0x02, 0x04, 0x08, 0x10, 0x1F}},
-    {'m', {0x00, 0x00, 0x1A, 0x15, 0x15, 0x11, 0x11}},
-    {'u', {0x00, 0x00, 0x11, 0x11, 0x11, 0x13, 0x0D}},
-    {kMicro, {0x00, 0x00, 0x11, 0x11, 0x13, 0x1D, 0x10}},
-    {'.', {0x00, 0x00, 0x00, 0x00, 0x00, 0x0C, 0x0C}},
-    {',', {0x00, 0x00, 0x00, 0x00, 0x0C, 0x04, 0x08}},
-    {'-', {0x00, 0x00, 0x00, 0x1F, 0x00, 0x00, 0x00}},
-    {'+', {0x00, 0x04, 0x04, 0x1F, 0x04, 0x04, 0x00}},
-    {':', {0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x0C, 0x00}},
-    {'=', {0x00, 0x00, 0x1F, 0x00, 0x1F, 0x00, 0x00}},
-    {'/', {0x01, 0x01, 0x02, 0x04, 0x08, 0x10, 0x10}},
-    {'_', {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x1F}},
-    {'(', {0x02, 0x04, 0x08, 0x08, 0x08, 0x04, 0x02}},
-    {')', {0x08, 0x04, 0x02, 0x02, 0x02, 0x04, 0x08}},
-    {'#', {0x0A, 0x0A, 0x1F, 0x0A, 0x1F, 0x0A, 0x0A}},
-    {'?', {0x0E, 0x11, 0x01, 0x02, 0x04, 0x00, 0x04}},
-    {' ', {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}},
-};
-
-const Glyph& glyphFor(char c) {
-  for (const Glyph& g : kFont)
-    if (g.code == c) return g;
-  // Other lower-case letters share the capitals; anything else shows as '?'.
-  const char upper = char(std::toupper(static_cast<unsigned char>(c)));
-  for (const Glyph& g : kFont)
-    if (g.code == upper) return g;
-  return glyphFor('?');
-}
-
-constexpr int kGlyphW = 5, kGlyphH = 7, kAdvance = 6;       // font pixels
 constexpr double kDegree = 3.14159265358979323846 / 180.0;  // radians
-
-class Canvas {
- public:
-  Canvas(int width, int height)
-      : w_(width), h_(height), px_(size_t(width) * size_t(height) * 3, 255) {}
-  int width() const { return w_; }
-  int height() const { return h_; }
-  const uint8_t* data() const { return px_.data(); }
-
-  void set(int x, int y, Rgb c) {
-    if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
-    uint8_t* p = &px_[(size_t(y) * size_t(w_) + size_t(x)) * 3];
-    p[0] = c.r, p[1] = c.g, p[2] = c.b;
-  }
-  void fill(int x, int y, int w, int h, Rgb c) {
-    for (int yy = y; yy < y + h; ++yy)
-      for (int xx = x; xx < x + w; ++xx) set(xx, yy, c);
-  }
-  void frame(int x, int y, int w, int h, Rgb c) {
-    fill(x - 1, y - 1, w + 2, 1, c), fill(x - 1, y + h, w + 2, 1, c);
-    fill(x - 1, y, 1, h, c), fill(x + w, y, 1, h, c);
-  }
-  // `scale` screen pixels per font pixel; (x, y) is the top-left of the text.
-  void text(int x, int y, const std::string& s, int scale, Rgb c) {
-    for (char ch : s) {
-      const Glyph& g = glyphFor(ch);
-      for (int row = 0; row < kGlyphH; ++row)
-        for (int col = 0; col < kGlyphW; ++col)
-          if (g.rows[row] & (0x10 >> col)) fill(x + col * scale, y + row * scale, scale, scale, c);
-      x += kAdvance * scale;
-    }
-  }
-
- private:
-  int w_, h_;
-  std::vector<uint8_t> px_;
-};
-
-int textWidth(const std::string& s, int scale) {
-  return s.empty() ? 0 : (int(s.size()) * kAdvance - 1) * scale;
-}
 
 // Viridis (perceptually uniform, readable in grey and by colour-blind viewers),
 // sampled at t = 0, 0.1, ..., 1 and interpolated linearly.
@@ -246,20 +133,6 @@ std::vector<double> hillShade(const PreviewGrid& p) {
   return factor;
 }
 
-// Largest 1, 2 or 5 times a power of ten that is <= x (x > 0).
-double niceBelow(double x) {
-  const double mag = std::pow(10.0, std::floor(std::log10(x)));
-  for (double m : {5.0, 2.0, 1.0})
-    if (m * mag <= x * (1 + 1e-12)) return m * mag;
-  return mag;
-}
-
-std::string formatValue(double v, int decimals, const std::string& unit) {
-  std::string s = fmt::format("{:.{}f}", v, decimals);
-  if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // no "-0"
-  return s + " " + unit;
-}
-
 struct Tick {
   double value;
   std::string label;
@@ -288,19 +161,6 @@ std::vector<Tick> colourBarTicks(double zmin, double zmax, int barH, int textH) 
     if (fits) ticks.push_back({v, formatValue(v * unitPerMm, decimals, unit)});
   }
   return ticks;
-}
-
-void writePng(const Canvas& canvas, const std::string& path, const std::string& title) {
-  OIIO::ImageSpec spec(canvas.width(), canvas.height(), 3, OIIO::TypeDesc::UINT8);
-  if (!title.empty()) spec.attribute("ImageDescription", title);
-  writeFileAtomically(path, [&](const std::string& temp) {
-    // The format is named explicitly: the temporary name has no ".png" extension.
-    auto out = OIIO::ImageOutput::create("png");
-    if (!out) throw InputError(path, "PNG writer unavailable: " + OIIO::geterror());
-    if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, canvas.data()) ||
-        !out->close())
-      throw InputError(path, "cannot write PNG: " + out->geterror());
-  });
 }
 
 }  // namespace

@@ -14,6 +14,7 @@ struct Job;
 
 struct SimulateArgs {
   std::string jobFile;  // empty: the built-in default job
+  std::string pathFile;  // --path: replaces the job's path (tools/tool_path_file.h)
   std::string outDir = "scallop-out";
   int threads = 0;               // 0: all cores
   bool json = false;             // print report.json on stdout

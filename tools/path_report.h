@@ -1,0 +1,28 @@
+// The report.json sections of a simulation that come from the job's path file and
+// design surface (issue 6): path-file warnings, and the design comparison with its
+// picture DIR/deviation.png.
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "raycast/zmap.h"
+#include "sweep/tool_path_sweep.h"
+
+namespace scallop {
+
+struct Job;
+
+// {"format", "warnings": [...first 100...], "warnings_total"} for a path file, and the
+// same warnings on stderr (the first 20 and a count) unless `quiet`.
+nlohmann::json pathFileReport(const Job& job, bool quiet);
+
+// Compares `map` with job.design (analysis/design_deviation.h), writes
+// DIR/deviation.png atomically and returns the "design" section: deviation
+// statistics (machined - design, mm), over-cut and under-cut areas, and the deepest
+// gouges (at most 100) with the moves, and file lines, that made them. Prints a
+// summary on stderr unless `quiet`.
+nlohmann::json designReport(const Job& job, const ZMap& map, const SweepOptions& sweep,
+                            const std::string& outDir, bool quiet);
+
+}  // namespace scallop
