@@ -1,6 +1,7 @@
 // scallop: command-line entry point. Parses the command line, sets the thread count,
 // and maps errors to the exit statuses of CONVENTIONS.md:
-//   0 success, 1 bad input, 2 usage error, 3 internal error.
+//   0 success, 1 bad input, 2 usage error, 3 internal error; 130 after Ctrl-C
+// (tools/interrupt.h).
 #include <tbb/global_control.h>
 
 #include <CLI/CLI.hpp>
@@ -12,6 +13,7 @@
 
 #include "sweep/input_error.h"
 #include "tools/command.h"
+#include "tools/interrupt.h"
 
 namespace {
 
@@ -20,11 +22,13 @@ constexpr const char* kDescription =
     "Sweeps ball, flat and bull (torus) cutters along linear moves, with any tool axis,\n"
     "and computes on a z-map grid the exact lowest point of the swept solids (double\n"
     "precision, 1e-6 mm). Lengths in mm, angles in degrees. Exit status: 0 success,\n"
-    "1 bad input, 2 usage error, 3 internal error. `scallop COMMAND --help` for more.";
+    "1 bad input, 2 usage error, 3 internal error, 130 interrupted (Ctrl-C; no partial\n"
+    "outputs are left). `scallop COMMAND --help` for more.";
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  scallop::installInterruptHandler();  // first: a Ctrl-C at any time then ends cleanly
   CLI::App app{kDescription, "scallop"};
   app.require_subcommand(1);
   scallop::CommonOptions common;
@@ -38,6 +42,8 @@ int main(int argc, char** argv) {
   commands.push_back(scallop::addValidateCommand(app, common));
   commands.push_back(scallop::addBenchCommand(app, common));
   commands.push_back(scallop::addMergeCommand(app, common));
+  commands.push_back(scallop::addStatsCommand(app, common));
+  commands.push_back(scallop::addExportCommand(app, common));
 
   try {
     app.parse(argc, argv);
@@ -54,6 +60,10 @@ int main(int argc, char** argv) {
   try {
     for (const scallop::Command& command : commands)
       if (command.app->parsed()) return command.run();
+  } catch (const scallop::Interrupted&) {
+    // Thrown from a progress callback; unwinding removed every temporary output.
+    std::fprintf(stderr, "scallop: interrupted\n");
+    return 130;
   } catch (const scallop::InputError& e) {
     std::fprintf(stderr, "scallop: error: %s\n", e.what());
     return 1;

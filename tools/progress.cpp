@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "tools/interrupt.h"
+
 namespace scallop {
 
 bool ProgressBar::enabled() {
@@ -11,13 +13,17 @@ bool ProgressBar::enabled() {
 }
 
 ProgressBar::ProgressBar(std::string label)
-    : label_(std::move(label)), start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
+    : label_(std::move(label)), start_(std::chrono::steady_clock::now()), lastDraw_(start_) {
+  beginInterruptPolling();  // update() polls for Ctrl-C (tools/interrupt.h)
+}
 
 ProgressBar::~ProgressBar() {
   finish();
+  endInterruptPolling();
 }
 
 void ProgressBar::update(int64_t done, int64_t total) {
+  throwIfInterrupted();  // Ctrl-C: every long loop reports progress (tools/interrupt.h)
   if (!enabled() || total <= 0) return;
   const auto now = std::chrono::steady_clock::now();
   if (done < total && now - lastDraw_ < std::chrono::milliseconds(100)) return;

@@ -19,8 +19,11 @@
 #include "tools/atomic_file.h"
 #include "tools/command.h"
 #include "tools/height_images.h"
+#include "tools/interrupt.h"
 #include "tools/job.h"
+#include "tools/path_report.h"
 #include "tools/progress.h"
+#include "tools/stats_command.h"
 #include "tools/tiled_simulation.h"
 
 namespace scallop {
@@ -63,16 +66,32 @@ int runSimulate(const SimulateArgs& args) {
   const auto tStart = std::chrono::steady_clock::now();
   // A grid too large to hold is computed in bands instead (tools/tiled_simulation.h).
   const bool exact = args.method == "exact";
+  if (!args.pathFile.empty() && args.jobFile.empty())
+    throw InputError("--path",
+                     "needs a JOB file for the tool (unless the path has CUTTER/), "
+                     "stock and grid");
   Job job = args.jobFile.empty() ? parseJob(defaultJobJson(), "built-in default job", !exact)
-                                 : loadJobFile(args.jobFile, !exact);
+                                 : loadJobFile(args.jobFile, !exact, args.pathFile);
+  if (job.design && (!exact || args.tiled || args.tileRows > 0 || !args.bands.empty()))
+    throw InputError(job.source + ": design",
+                     "the design comparison needs --method exact and the whole map in memory "
+                     "(not --tiled, --tile-rows or --bands)");
   // Fail before the long computation, not after it.
+  if (exact) checkSceneFitsMemory(job);
   ensureWritableDirectory(args.outDir);
 
   const GridSpec grid = job.grid();
   if (!exact && (args.tiled || args.tileRows > 0 || !args.bands.empty()))
     throw InputError("--method", "bands (--tiled, --tile-rows, --bands) need --method exact");
   if (args.tiled || args.tileRows > 0 || !args.bands.empty()) return runTiledSimulate(args, job);
-  if (exact && !gridFitsMemory(job, args.outDir)) return runTiledSimulate(args, job);
+  if (exact && !gridFitsMemory(job, args.outDir)) {
+    if (job.design)
+      throw InputError(job.source + ": design",
+                       "the map does not fit in memory, which the design comparison needs; use a "
+                       "larger grid.spacing");
+    return runTiledSimulate(args, job);
+  }
+  const json pathFile = job.isRaster ? json() : pathFileReport(job, args.json);
   if (!args.json)
     std::fprintf(stderr,
                  "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
@@ -101,6 +120,7 @@ int runSimulate(const SimulateArgs& args) {
     sim = simulate(job.cutter, job.path, job.stock, grid, options);
   }
   bar.finish();
+  throwIfInterrupted();  // a Ctrl-C during the last tiles: write nothing
 
   // --- Outputs, each written to a temporary name and renamed when complete. ---------
   namespace fs = std::filesystem;
@@ -116,6 +136,8 @@ int runSimulate(const SimulateArgs& args) {
   PreviewOptions preview;
   preview.title = title;
   writePreviewPng(sim.map, png, preview);
+  const json design =
+      job.design ? designReport(job, sim.map, options.sweep, args.outDir, args.json) : json();
   const double writeSeconds = secondsSince(tWrite);
 
   json r;
@@ -146,7 +168,10 @@ int runSimulate(const SimulateArgs& args) {
       {"mcells_per_s", sim.cast.seconds > 0 ? sim.cast.cells / sim.cast.seconds / 1e6 : 0.0}};
   if (job.isRaster) meas.update(rasterMeasurements(job, sim.map));
   r["measurements"] = meas;
+  r["surface_stats"] = mapSurfaceStatsJson(sim.map);
   r["outputs"] = {"heights.exr", "heights.gsf", "preview.png", "report.json"};
+  if (!pathFile.is_null()) r["path_file"] = pathFile;
+  if (!design.is_null()) r["design"] = design, r["outputs"].push_back("deviation.png");
   const std::string reportText = r.dump(2) + "\n";
   writeFileAtomically(report, [&](const std::string& tmp) {
     std::ofstream out(tmp, std::ios::binary);
@@ -181,7 +206,12 @@ constexpr const char* kSimulateHelp =
     "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
     "Job file keys: tool{type,radius,corner_radius,flute_length}, stock{min,max},\n"
     "grid{spacing}, path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,\n"
-    "segment_length} | file}, sweep{axis_tolerance}.";
+    "segment_length} | file}, sweep{axis_tolerance},\n"
+    "design{stl, gouge_tolerance (mm, default 0.001)}: adds machined - design statistics,\n"
+    "gouges with the moves (file lines) that made them, and DIR/deviation.png.\n"
+    "Path files by extension: .cl .apt .cls (APT CL data: GOTO, CUTTER, RAPID, ...),\n"
+    ".nc .ngc .gcode .tap (G-code G0-G3, G17-G21, G90/G91), .txt (x y z [i j k] lines).\n"
+    "Without \"tool\", an APT CUTTER/ statement defines the cutter.";
 
 }  // namespace
 
@@ -189,7 +219,7 @@ void addThreadsOption(CLI::App& command, CommonOptions& common) {
   command
       .add_option("--threads", common.threads,
                   "Worker threads (default: all cores); results do not depend on it")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 1 << 16));
 }
 
 Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
@@ -200,6 +230,9 @@ Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
   app->add_option("-o,--output", args->outDir,
                   "Output folder, created if missing; other files in it are left alone")
       ->capture_default_str();
+  app->add_option("--path", args->pathFile,
+                  "Tool-path file that replaces the job's path (format from the extension;\n"
+                  "needs JOB for the stock and grid)");
   addThreadsOption(*app, common);
   app->add_flag("--json", args->json, "Print report.json on stdout (and nothing else there)");
   app->add_option("--method", args->method,

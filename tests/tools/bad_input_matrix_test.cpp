@@ -1,0 +1,192 @@
+// Bad-input matrix, part 1: job files, tool-path files and command-line options
+// (tests/tools/bad_input_matrix.h says what every row must satisfy).
+#include "tests/tools/bad_input_matrix.h"
+
+#include <string>
+#include <vector>
+
+namespace scallop::test {
+namespace {
+
+// A small valid job (0.1 s); rows replace one piece of it.
+const std::string kJob = R"({
+  "tool":  {"type": "ball", "radius": 1.0},
+  "stock": {"min": [0, 0, -2], "max": [4, 4, 0]},
+  "grid":  {"spacing": 0.1},
+  "path":  {"raster": {"direction": "x", "step_over": 0.8, "depth": 0.3}}
+})";
+const std::string kFileJob = R"({
+  "tool":  {"type": "ball", "radius": 1.0},
+  "stock": {"min": [0, 0, -2], "max": [4, 4, 0]},
+  "grid":  {"spacing": 0.1},
+  "path":  {"file": "part.txt"}
+})";
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const size_t at = s.find(from);
+  if (at == std::string::npos) throw std::logic_error("row template lacks " + from);
+  return s.replace(at, from.size(), to);
+}
+
+const std::string kGarbage("\x89\x00\xff\x13{\x01\"tool\x00\x7f\xfe\n\x1b[2J", 17);
+
+BadInputRow jobRow(const std::string& name, const std::string& text,
+                   std::vector<std::string> mentions, const std::string& extra = "") {
+  return {
+      name, {{"job.json", text}}, "simulate @/job.json -o @/out" + extra, 1, std::move(mentions)};
+}
+
+TEST_F(BadInputMatrix, JobFiles) {
+  const std::vector<BadInputRow> rows = {
+      jobRow("empty file", "", {"job.json:1:1", "malformed JSON"}),
+      jobRow("binary garbage", kGarbage, {"job.json:1:1", "malformed JSON"}),
+      jobRow("truncated", kJob.substr(0, 70), {"job.json:3:", "malformed JSON"}),
+      jobRow("number beyond double", replaced(kJob, "1.0}", "1e400}"),
+             {"job.json", "number overflow"}),
+      jobRow("huge length", replaced(kJob, "1.0}", "1e300}"), {"tool.radius", "1e6"}),
+      jobRow("huge coordinate", replaced(kJob, "[4, 4, 0]", "[4e9, 4, 0]"), {"stock.max", "1e6"}),
+      jobRow("huge depth", replaced(kJob, "\"depth\": 0.3", "\"depth\": 1e300"),
+             {"path.raster.depth"}),
+      jobRow("NaN", replaced(kJob, "1.0}", "NaN}"), {"job.json:2:", "malformed JSON"}),
+      jobRow("Infinity", replaced(kJob, "0.1}", "Infinity}"), {"job.json:4:", "malformed JSON"}),
+      jobRow("negative spacing", replaced(kJob, "0.1}", "-0.1}"), {"grid.spacing", "> 0"}),
+      jobRow("zero spacing", replaced(kJob, "0.1}", "0}"), {"grid.spacing", "> 0"}),
+      jobRow("zero radius", replaced(kJob, "1.0}", "0}"), {"tool.radius"}),
+      jobRow("negative radius", replaced(kJob, "1.0}", "-1}"), {"tool.radius"}),
+      jobRow("empty stock", replaced(kJob, "[4, 4, 0]", "[4, 4, -2]"), {"stock.max"}),
+      jobRow("inverted stock", replaced(kJob, "[4, 4, 0]", "[-4, 4, 0]"), {"stock.max"}),
+      jobRow("negative step-over", replaced(kJob, "0.8", "-0.8"), {"path.raster.step_over"}),
+      jobRow("zero step-over", replaced(kJob, "0.8", "0"), {"path.raster.step_over"}),
+      jobRow("too many passes", replaced(kJob, "0.8", "1e-9"), {"path.raster.step_over"}),
+      jobRow("lead of 90 deg", replaced(kJob, "0.3}", "0.3, \"lead_deg\": 90}"),
+             {"path.raster.lead_deg"}),
+      jobRow("unknown top-level key", replaced(kJob, "{\n", "{\"colour\": 1,\n"),
+             {"colour", "unknown key"}),
+      jobRow("unknown nested key", replaced(kJob, "1.0}", "1.0, \"colour\": 1}"),
+             {"tool.colour", "unknown key"}),
+      jobRow("string for a number", replaced(kJob, "1.0}", "\"1.0\"}"),
+             {"tool.radius", "expected a number"}),
+      jobRow("two coordinates", replaced(kJob, "[0, 0, -2]", "[0, 0]"), {"stock.min"}),
+      jobRow("object for a string", replaced(kJob, "\"ball\"", "{}"), {"tool.type"}),
+      jobRow("unknown cutter type", replaced(kJob, "\"ball\"", "\"drill\""), {"tool.type"}),
+      jobRow("array at the top", "[1, 2]", {"job.json", "JSON object"}),
+      jobRow("missing section", replaced(kJob, "\"grid\":  {\"spacing\": 0.1},", ""),
+             {"grid", "missing"}),
+      jobRow("duplicated key", replaced(kJob, "0.1}", "0.1, \"spacing\": 0.2}"),
+             {"grid.spacing", "duplicate key"}),
+      jobRow("duplicated section", replaced(kJob, "{\n", "{\"grid\": {\"spacing\": 1},\n"),
+             {"grid", "duplicate key"}),
+      jobRow("raster and file", replaced(kJob, "0.3}}", "0.3}, \"file\": \"a.txt\"}"),
+             {"path", "exactly one"}),
+      // The map would need 48 TB: refused before allocating, naming the bytes and --tiled.
+      jobRow("grid larger than memory (stamp)", replaced(kJob, "0.1}", "2e-6}"),
+             {"grid.spacing", "bytes", "--tiled"}, " --method stamp"),
+      {"job file missing", {}, "simulate @/nope.json -o @/out", 1, {"@/nope.json", "cannot open"}},
+      {"job file is a folder", {{"d/x", ""}}, "simulate @/d -o @/out", 1, {"@/d", "folder"}},
+      {"output folder cannot be created",
+       {{"job.json", kJob}},
+       "simulate @/job.json -o /proc/scallop-bad-input",
+       1,
+       {"/proc/scallop-bad-input"}},
+      {"output is a file",
+       {{"job.json", kJob}},
+       "simulate @/job.json -o @/job.json",
+       1,
+       {"@/job.json", "not a folder"}},
+  };
+  for (const BadInputRow& row : rows) check(row);
+}
+
+BadInputRow pathRow(const std::string& name, const std::string& text,
+                    std::vector<std::string> mentions) {
+  return {name,
+          {{"job.json", kFileJob}, {"part.txt", text}},
+          "simulate @/job.json -o @/out",
+          1,
+          std::move(mentions)};
+}
+
+// Plain CL text (tools/tool_path_file.h). The APT and G-code readers have their rows
+// in their own tests (apt_reader_test.cpp, gcode_reader_test.cpp).
+TEST_F(BadInputMatrix, ToolPathFiles) {
+  const std::vector<BadInputRow> rows = {
+      pathRow("empty file", "", {"part.txt"}),
+      pathRow("only comments", "# nothing\n\n", {"part.txt"}),
+      pathRow("binary garbage", kGarbage, {"part.txt:1"}),
+      pathRow("truncated line", "0 0 -0.2\n1 2", {"part.txt:2"}),
+      pathRow("four numbers", "0 0 -0.2 1\n", {"part.txt:1"}),
+      pathRow("NaN", "0 0 -0.2\nnan 1 -0.2\n", {"part.txt:2"}),
+      pathRow("infinity", "0 0 -0.2\n1 inf -0.2\n", {"part.txt:2"}),
+      pathRow("number beyond double", "0 0 -0.2\n1 1e400 -0.2\n", {"part.txt:2"}),
+      pathRow("zero axis", "0 0 -0.2 0 0 0\n", {"part.txt:1"}),
+      pathRow("words", "0 0 -0.2\nGOTO the shop\n", {"part.txt:2"}),
+      {"path file missing",
+       {{"job.json", kFileJob}},
+       "simulate @/job.json -o @/out",
+       1,
+       {"part.txt"}},
+      {"path file is a folder",
+       {{"job.json", kFileJob}, {"part.txt/x", ""}},
+       "simulate @/job.json -o @/out",
+       1,
+       {"part.txt"}},
+  };
+  for (const BadInputRow& row : rows) check(row);
+}
+
+TEST_F(BadInputMatrix, CommandLineOptions) {
+  const std::vector<std::pair<std::string, std::string>> job = {{"job.json", kJob}};
+  const std::vector<BadInputRow> rows = {
+      {"no command", {}, "", 2, {}},
+      {"unknown command", {}, "frobnicate", 2, {}},
+      {"unknown option", job, "simulate @/job.json --no-such-option", 2, {"--no-such-option"}},
+      {"negative threads", job, "simulate @/job.json -o @/out --threads -1", 2, {"--threads"}},
+      {"threads not a number", job, "simulate @/job.json -o @/out --threads two", 2, {"--threads"}},
+      {"huge threads", job, "simulate @/job.json -o @/out --threads 99999999999", 2, {"--threads"}},
+      {"unknown method", job, "simulate @/job.json -o @/out --method guess", 2, {"--method"}},
+      {"zero tile rows", job, "simulate @/job.json -o @/out --tile-rows 0", 2, {"--tile-rows"}},
+      {"bad band range", job, "simulate @/job.json -o @/out --bands 3:1", 1, {"--bands"}},
+      {"bands not numbers", job, "simulate @/job.json -o @/out --bands a:b", 1, {"--bands"}},
+      {"option without value", job, "simulate @/job.json -o", 2, {"-o"}},
+      {"interval: zero radius",
+       {},
+       "interval --tool ball --radius 0 --scallop 0.01",
+       1,
+       {"--radius"}},
+      {"interval: NaN radius",
+       {},
+       "interval --tool ball --radius nan --scallop 0.01",
+       1,
+       {"--radius"}},
+      {"interval: infinite scallop",
+       {},
+       "interval --tool ball --radius 1 --scallop 1e400",
+       1,
+       {"--scallop"}},
+      {"interval: unknown tool",
+       {},
+       "interval --tool drill --radius 1 --scallop 0.01",
+       1,
+       {"--tool"}},
+      {"surface: negative size", {}, "surface --size -1 1 -o @/s.stl", 1, {"--size"}},
+      {"surface: zero facets", {}, "surface --facets 0 -o @/s.stl", 1, {"--facets"}},
+      {"surface: unwritable output",
+       {},
+       "surface -o /proc/scallop-bad.stl",
+       1,
+       {"/proc/scallop-bad.stl"}},
+      {"bench: zero area", {}, "bench --area 0", 2, {"--area"}},
+      {"bench: unknown case", {}, "bench --case B9", 2, {"--case"}},
+      {"merge: missing folder", {}, "merge @/none", 1, {"@/none"}},
+      {"merge: folder without bands", {{"d/readme", "x"}}, "merge @/d", 1, {"@/d"}},
+      {"validate: unwritable output",
+       {},
+       "validate -o /proc/scallop-bad",
+       1,
+       {"/proc/scallop-bad"}},
+  };
+  for (const BadInputRow& row : rows) check(row);
+}
+
+}  // namespace
+}  // namespace scallop::test
