@@ -2,15 +2,20 @@
 
 namespace scallop {
 
-std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
-                                       const Box3& stock, double spacing,
-                                       const SimulationOptions& options) {
+SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const SimulationOptions& options) {
   SceneOptions sceneOptions;
   sceneOptions.tileSize = options.tileSize;
   sceneOptions.stockTop = stock.max.z;
   // Candidate regions of options.cast.regionCells cells a side (zmap_caster.cpp).
   sceneOptions.regionHalfSize = 0.5 * double(options.cast.regionCells - 1) * spacing;
-  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.sweep), sceneOptions);
+  return sceneOptions;
+}
+
+std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
+                                       const Box3& stock, double spacing,
+                                       const SimulationOptions& options) {
+  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.sweep),
+                                      sceneOptionsFor(stock, spacing, options));
 }
 
 SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,

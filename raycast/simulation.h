@@ -24,6 +24,9 @@ struct SimulationResult {
   CastStats cast;
 };
 
+// The scene options simulate() uses for cells of side `spacing` (mm) under `stock`.
+SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const SimulationOptions& options);
+
 // The culling scene of `path` for a grid of cells of side `spacing` (mm): built once,
 // it serves any number of sub-grids (bands of a map too large to hold).
 std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,

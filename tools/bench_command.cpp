@@ -106,9 +106,8 @@ StampComparison compareWithStamping(const BenchCase& b, double side, int threads
   tbb::task_arena arena(threads);
   arena.execute([&] {
     const auto t0 = Clock::now();
-    SceneOptions sceneOptions;
-    sceneOptions.stockTop = b.stock.max.z;
-    const SweptScene scene(segments, sceneOptions);
+    // Exactly as simulate() builds and casts it (region queries included).
+    const SweptScene scene(segments, sceneOptionsFor(b.stock, w.spacing, SimulationOptions()));
     ZMap exact(w, b.stock.max.z);
     const CastStats cast = castZMap(scene, exact);
     c.exactSeconds = secondsSince(t0);
