@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 
+#include "analysis/sampled_field.h"
 #include "raycast/zmap.h"
 #include "sweep/input_error.h"
 
@@ -18,16 +19,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 ZMap field(int64_t nx, int64_t ny, double spacing, const std::function<double(double, double)>& z) {
-  GridSpec g;
-  g.originX = 0.5;
-  g.originY = -0.25;
-  g.spacing = spacing;
-  g.nx = nx;
-  g.ny = ny;
-  ZMap map(g, 0.0);
-  for (int64_t j = 0; j < ny; ++j)
-    for (int64_t i = 0; i < nx; ++i) map.at(i, j) = z(g.cellCentreX(i), g.cellCentreY(j));
-  return map;
+  return sampledField(0.5, -0.25, nx, ny, spacing, z);
 }
 
 TEST(ProfileMetrology, BilinearSamplesOfAPlaneAreExact) {

@@ -15,6 +15,7 @@
 #include <random>
 #include <string>
 
+#include "analysis/sampled_field.h"
 #include "raycast/zmap.h"
 #include "sweep/input_error.h"
 #include "tools/height_images.h"
@@ -26,16 +27,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kRel = 1e-9;
 
 ZMap field(int64_t nx, int64_t ny, double spacing, const std::function<double(double, double)>& z) {
-  GridSpec g;
-  g.originX = -1.0;
-  g.originY = 2.0;
-  g.spacing = spacing;
-  g.nx = nx;
-  g.ny = ny;
-  ZMap map(g, 0.0);
-  for (int64_t j = 0; j < ny; ++j)
-    for (int64_t i = 0; i < nx; ++i) map.at(i, j) = z(g.cellCentreX(i), g.cellCentreY(j));
-  return map;
+  return sampledField(-1.0, 2.0, nx, ny, spacing, z);
 }
 
 // Brute force: mean |h - mean| and extremes of values h, in long double.

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "sweep/input_error.h"
+#include "tools/input_error_message.h"
 
 namespace scallop {
 namespace {
@@ -19,12 +20,7 @@ ToolPathFile parse(const std::string& text) {
 }
 
 std::string error(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return inputErrorMessage([&] { parse(text); });
 }
 
 TEST(AptReader, MovesRapidsAxesAndContinuationLines) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "sweep/input_error.h"
+#include "tools/input_error_message.h"
 
 namespace scallop {
 namespace {
@@ -23,12 +24,7 @@ ToolPathFile parse(const std::string& text, double arcTolerance = 1e-4) {
 
 // The message of the InputError `text` raises ("" when it parses).
 std::string error(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return inputErrorMessage([&] { parse(text); });
 }
 
 TEST(GcodeReader, LinearRapidUnitsAndIncrementalMoves) {
