@@ -113,9 +113,12 @@ class GcodeInterpreter {
                          fmt::format("two {} words (G{} and G{}) in one line", group, slot, code));
       slot = code;
     };
+    // A word's number as a code: whole numbers 0..999 only (larger values would not
+    // even fit an int; the fuzzer found G99999999999).
+    auto wordCode = [](double v) { return v >= 0 && v < 1000 && v == std::floor(v) ? int(v) : -1; };
     for (double g : b.g) {
-      const int code = int(g);
-      if (double(code) != g) throw InputError(where_, fmt::format("unsupported G-word G{:g}", g));
+      const int code = wordCode(g);
+      if (code < 0) throw InputError(where_, fmt::format("unsupported G-word G{:g}", g));
       if (code >= 0 && code <= 3)
         setOnce(motion, code, "motion");
       else if (code >= 17 && code <= 19)
@@ -130,9 +133,8 @@ class GcodeInterpreter {
         throw InputError(where_, fmt::format("unsupported G-word G{}", code));
     }
     for (double m : b.m) {
-      const int code = int(m);
-      const bool harmless =
-          double(code) == m && ((code >= 0 && code <= 5) || (code >= 7 && code <= 9) || code == 30);
+      const int code = wordCode(m);
+      const bool harmless = (code >= 0 && code <= 5) || (code >= 7 && code <= 9) || code == 30;
       if (!harmless)
         throw InputError(where_, fmt::format("unsupported M-word M{:g}{}", m,
                                              m == 6 ? " (tool change: one tool per path)" : ""));

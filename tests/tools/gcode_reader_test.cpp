@@ -101,6 +101,11 @@ TEST(GcodeReader, MalformedInputIsNamedByLine) {
   const std::string start = "G21\nG0 X0 Y0 Z0\n";
   EXPECT_NE(error(start + "G1 X1.2.3\n").find("t.nc:3"), std::string::npos);
   EXPECT_NE(error(start + "G43\n").find("t.nc:3: unsupported G-word G43"), std::string::npos);
+  // Numbers beyond int (a fuzzer finding: the conversion was undefined behaviour).
+  EXPECT_NE(error(start + "G99999999999\n").find("t.nc:3: unsupported G-word G1e+11"),
+            std::string::npos);
+  EXPECT_NE(error(start + "M-99999999999\n").find("t.nc:3: unsupported M-word"),
+            std::string::npos);
   EXPECT_NE(error(start + "G1 X\n").find("t.nc:3: word X has no number"), std::string::npos);
   EXPECT_NE(error(start + "G1 Xnan\n").find("t.nc:3"), std::string::npos);
   EXPECT_NE(error(start + "G1 X1e5\n").find("t.nc:3"), std::string::npos);
