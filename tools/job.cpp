@@ -155,6 +155,32 @@ RasterSpec parseRaster(const json& r) {
   return spec;
 }
 
+// makeRaster holds every move (up to its own limit of 5e7): refuse, before generating
+// it, a raster whose moves alone would not fit in memory. Counts as sweep/raster.cpp
+// does; invalid values are left to makeRaster's messages.
+void checkRasterFitsMemory(const Job& job) {
+  const RasterSpec& r = job.raster;
+  if (!(r.stepOver > 0) || !(r.segmentLength >= 0)) return;
+  const bool alongX = r.direction == 'x';
+  const double cross =
+      alongX ? job.stock.max.y - job.stock.min.y : job.stock.max.x - job.stock.min.x;
+  const double feed =
+      (alongX ? job.stock.max.x - job.stock.min.x : job.stock.max.y - job.stock.min.y) +
+      2 * job.cutter.radius + 2;
+  const double passes = std::floor(cross / r.stepOver + 1e-9) + 1;
+  const double moves = passes * (r.segmentLength > 0 ? std::ceil(feed / r.segmentLength) + 1 : 2);
+  const double need = moves * double(sizeof(Move));
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg << "gives " << moves << " moves, which need " << std::setprecision(15) << need
+        << " bytes of memory, but only " << std::fixed << std::setprecision(1)
+        << available / double(1ull << 30) << " GiB are available";
+    throw InputError(r.segmentLength > 0 ? "path.raster.segment_length" : "path.raster.step_over",
+                     msg.str());
+  }
+}
+
 // The position of a byte offset as "line L, column C" for malformed-JSON messages.
 std::string lineColumn(const std::string& s, size_t byte) {
   size_t line = 1, col = 1;
@@ -181,6 +207,22 @@ const char* defaultJobJson() {
 
 GridSpec Job::grid() const {
   return gridCovering(stock.min.x, stock.min.y, stock.max.x, stock.max.y, spacing);
+}
+
+void checkPathMagnitudes(const ToolPath& path, const std::vector<int64_t>& lines,
+                         const std::string& file) {
+  auto far = [](const Vec3& p) {
+    return std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))) > kMaxMagnitude;
+  };
+  for (size_t k = 0; k < path.moves.size(); ++k) {
+    const Move& m = path.moves[k];
+    if (!far(m.from.tip) && !far(m.to.tip)) continue;
+    const Vec3& p = far(m.to.tip) ? m.to.tip : m.from.tip;
+    std::ostringstream msg;
+    msg << "the tip position (" << p.x << ", " << p.y << ", " << p.z
+        << ") is beyond +-1e6 mm (1 km) from the origin";
+    throw InputError(k < lines.size() ? file + ":" + std::to_string(lines[k]) : file, msg.str());
+  }
 }
 
 double availableMemoryBytes() {
@@ -221,10 +263,10 @@ void checkSceneFitsMemory(const Job& job) {
   const double available = availableMemoryBytes();
   if (need > 0.8 * available) {
     std::ostringstream msg;
-    msg << "the exact simulation of " << moves << " cutting moves needs about " << std::fixed
-        << std::setprecision(0) << need << " bytes (" << std::setprecision(1)
-        << need / double(1ull << 30) << " GiB) of memory for its culling scene, but only "
-        << available / double(1ull << 30)
+    msg << "the exact simulation of " << moves << " cutting moves needs about "
+        << std::setprecision(need < 1e15 ? 15 : 3) << need << " bytes (" << std::fixed
+        << std::setprecision(1) << need / double(1ull << 30)
+        << " GiB) of memory for its culling scene, but only " << available / double(1ull << 30)
         << " GiB are available; split the path into several jobs (--tiled bounds only the "
            "height map's memory, not the scene's)";
     throw InputError(job.source + ": path", msg.str());
@@ -328,6 +370,7 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
     if (path.contains("raster")) {
       job.isRaster = true;
       job.raster = parseRaster(requireObject(path, "raster", "path.raster"));
+      checkRasterFitsMemory(job);
       job.path = makeRaster(job.cutter, job.stock, job.raster);
     } else {
       const std::string file = text(path, "file", "path.file");
@@ -344,6 +387,7 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
         read.warnings.add(job.pathFile,
                           "its CUTTER/ differs from the job's \"tool\"; the job's "
                           "tool is used");
+      checkPathMagnitudes(read.path, read.moveLines, job.pathFile);
       warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile);
       job.path = std::move(read.path);
       job.moveLines = std::move(read.moveLines);

@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <vector>
 
 #include "analysis/triangle_mesh.h"
 #include "raycast/zmap.h"
@@ -59,6 +60,12 @@ void checkGridFitsMemory(const GridSpec& grid, const std::string& field);
 // Refuses a path whose exact simulation's culling scene would not fit in memory (an
 // estimate from the moves' footprints, measured costs in job.cpp), naming the bytes.
 void checkSceneFitsMemory(const Job& job);
+
+// Refuses a path with a tip beyond +-1e6 mm (1 km) in x, y or z, as the job's own
+// numbers are bounded: the geometry's squares and tile counts stay far from
+// overflow. Names "file:line" from `lines` (ToolPathFile::moveLines) when given.
+void checkPathMagnitudes(const ToolPath& path, const std::vector<int64_t>& lines,
+                         const std::string& file);
 
 // /proc/meminfo's MemAvailable, bytes (8 GiB when it cannot be read).
 double availableMemoryBytes();

@@ -28,7 +28,7 @@ constexpr const char* kDescription =
 }  // namespace
 
 int main(int argc, char** argv) {
-  scallop::installInterruptHandler();  // first: a Ctrl-C at any time then ends cleanly
+  scallop::installInterruptHandler();  // Ctrl-C in a long loop then ends cleanly
   CLI::App app{kDescription, "scallop"};
   app.require_subcommand(1);
   scallop::CommonOptions common;

@@ -78,9 +78,11 @@ inline void fuzzGsf(const std::string& bytes) {
 // Cutter locations read *and simulated* (sweep, Embree scene, exact cast) on a fixed
 // 6 x 6 grid of 0.25 mm cells, so hostile coordinates (huge, tiny, degenerate axes,
 // zero-length moves) reach the geometry, where overflow and float-to-integer
-// conversions would be undefined behaviour.
+// conversions would be undefined behaviour. Like `scallop simulate`, it refuses tips
+// beyond 1 km first (checkPathMagnitudes).
 inline void fuzzSimulateCl(const std::string& bytes) {
   const ToolPath path = parseToolPath(bytes, "fuzz.txt");
+  checkPathMagnitudes(path, {}, "fuzz.txt");  // as parseJob does for every path file
   // Runs must stay well under the 10 s timeout with sanitizers: at most 16 moves, and
   // turning axes subdivided to 0.01 mm, not 1e-4 (three 90-degree turns make 22,000
   // segments at 1e-4 mm, 5 s even without sanitizers: real work, not a hang).

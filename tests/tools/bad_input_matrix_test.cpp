@@ -58,6 +58,10 @@ TEST_F(BadInputMatrix, JobFiles) {
       jobRow("negative step-over", replaced(kJob, "0.8", "-0.8"), {"path.raster.step_over"}),
       jobRow("zero step-over", replaced(kJob, "0.8", "0"), {"path.raster.step_over"}),
       jobRow("too many passes", replaced(kJob, "0.8", "1e-9"), {"path.raster.step_over"}),
+      // 2.4e10 moves: refused before generating them, naming the bytes.
+      jobRow("raster moves larger than memory",
+             replaced(replaced(kJob, "0.8", "0.001"), "0.3}", "0.3, \"segment_length\": 1e-6}"),
+             {"path.raster.segment_length", "bytes"}),
       jobRow("lead of 90 deg", replaced(kJob, "0.3}", "0.3, \"lead_deg\": 90}"),
              {"path.raster.lead_deg"}),
       jobRow("unknown top-level key", replaced(kJob, "{\n", "{\"colour\": 1,\n"),
@@ -106,10 +110,36 @@ BadInputRow pathRow(const std::string& name, const std::string& text,
           std::move(mentions)};
 }
 
-// Plain CL text (tools/tool_path_file.h). The APT and G-code readers have their rows
-// in their own tests (apt_reader_test.cpp, gcode_reader_test.cpp).
+BadInputRow pathRow(const std::string& name, const std::string& file, const std::string& text,
+                    std::vector<std::string> mentions) {
+  return {name,
+          {{"job.json", replaced(kFileJob, "part.txt", file)}, {file, text}},
+          "simulate @/job.json -o @/out",
+          1,
+          std::move(mentions)};
+}
+
+// Tool-path files of every format, through a job's path.file (format by extension:
+// tools/tool_path_file.h). Each reader's own tests hold its finer cases.
 TEST_F(BadInputMatrix, ToolPathFiles) {
   const std::vector<BadInputRow> rows = {
+      pathRow("beyond 1 km", "part.txt", "0 0 -0.2\n1e300 1 -0.2\n", {"part.txt:2", "1 km"}),
+      pathRow("APT: empty", "p.apt", "", {"p.apt", "GOTO"}),
+      pathRow("APT: garbage", "p.apt", kGarbage, {"p.apt:1"}),
+      pathRow("APT: truncated GOTO", "p.apt", "GOTO/1,2", {"p.apt:1", "GOTO"}),
+      pathRow("APT: continuation past the end", "p.apt", "GOTO/1,2,3,$\n", {"p.apt:1"}),
+      pathRow("APT: NaN", "p.apt", "GOTO/1,2,nan\n", {"p.apt:1"}),
+      pathRow("APT: beyond double", "p.apt", "GOTO/1,2,1e400\n", {"p.apt:1"}),
+      pathRow("APT: beyond 1 km", "p.apt", "GOTO/0,0,0\nGOTO/1,2,-3e9\n", {"p.apt:2", "1 km"}),
+      pathRow("APT: zero axis", "p.apt", "GOTO/0,0,-0.2,0,0,0\nGOTO/1,0,-0.2\n", {"p.apt:1"}),
+      pathRow("G-code: empty", "p.nc", "", {"p.nc"}),
+      pathRow("G-code: garbage", "p.nc", kGarbage, {"p.nc:1"}),
+      pathRow("G-code: truncated word", "p.nc", "G1 X1 Y", {"p.nc:1", "Y"}),
+      pathRow("G-code: exponent", "p.nc", "G1 X1e400 Y0 Z-0.2\n", {"p.nc:1"}),
+      pathRow("G-code: beyond 1 km", "p.nc", "G0 X0 Y0 Z-0.2\nG1 X9000000\n", {"p.nc:2", "1 km"}),
+      pathRow("G-code: arc radius below half the chord", "p.nc", "G0 X0 Y0 Z-0.2\nG2 X1 Y0 R0.1\n",
+              {"p.nc:2"}),
+      pathRow("G-code: unclosed comment", "p.nc", "G1 X1 (no end", {"p.nc:1"}),
       pathRow("empty file", "", {"part.txt"}),
       pathRow("only comments", "# nothing\n\n", {"part.txt"}),
       pathRow("binary garbage", kGarbage, {"part.txt:1"}),

@@ -1,0 +1,117 @@
+// Resource guards (issue 8): a path whose culling scene cannot fit in memory is refused
+// before anything is built, naming the bytes; and a tool-path file is read as a stream,
+// so reading it costs memory per move, not per byte of text.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "sweep/input_error.h"
+#include "tests/tools/cli_harness.h"
+#include "tools/job.h"
+#include "tools/tool_path_file.h"
+
+namespace scallop {
+namespace {
+
+// Short 3-axis moves of a ball R = 1 cutting 0.2 mm deep, as in the 1e6-move
+// measurement of checkSceneFitsMemory (~18.5 KB of scene per move).
+Job shortMoves(size_t n) {
+  Job job = parseJob(R"({"tool": {"type": "ball", "radius": 1},
+    "stock": {"min": [0, 0, -1], "max": [20, 20, 0]}, "grid": {"spacing": 0.1},
+    "path": {"raster": {"direction": "x", "step_over": 30, "depth": 0.2}}})",
+                     "guard.json");
+  Move m;
+  m.from = {{1, 1, -0.2}, {0, 0, 1}};
+  m.to = {{1.1, 1, -0.2}, {0, 0, 1}};
+  job.path.moves.assign(n, m);
+  return job;
+}
+
+TEST(ResourceGuard, SceneLargerThanMemoryIsRefusedBeforeBuilding) {
+  // Enough moves that even the estimate's per-move floor exceeds what is available.
+  const double available = availableMemoryBytes();
+  const size_t n = size_t(std::ceil(available / 8000));
+  try {
+    checkSceneFitsMemory(shortMoves(n));
+    FAIL() << n << " moves were accepted with " << available << " bytes available";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("guard.json: path"), std::string::npos) << what;
+    EXPECT_NE(what.find(std::to_string(n) + " cutting moves"), std::string::npos) << what;
+    EXPECT_NE(what.find(" bytes"), std::string::npos) << what;
+  }
+  // A hundredth of that is fine (the estimate is linear in the moves).
+  EXPECT_NO_THROW(checkSceneFitsMemory(shortMoves(n / 100)));
+}
+
+TEST(ResourceGuard, MovesAboveTheStockCostNoScene) {
+  Job job = shortMoves(size_t(std::ceil(availableMemoryBytes() / 8000)));
+  for (Move& m : job.path.moves) m.from.tip.z = m.to.tip.z = 100;  // far above the top
+  EXPECT_NO_THROW(checkSceneFitsMemory(job));
+}
+
+long statusKb(const char* field) {
+  std::ifstream in("/proc/self/status");
+  std::string key;
+  long kb = -1;
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(field, 0) == 0) kb = std::stol(line.substr(std::string(field).size()));
+  return kb;
+}
+
+TEST(ResourceGuard, ToolPathFilesAreReadAsAStream) {
+#if defined(__SANITIZE_ADDRESS__)
+  // ASan's redzones and its quarantine of freed blocks (the vector's old buffers)
+  // change the peak; the measurement belongs to the normal build.
+  GTEST_SKIP() << "peak memory is not meaningful under AddressSanitizer";
+#endif
+  // 1e6 moves of 3-axis CL text (~21 MB). In a child process, so that the peak resident
+  // size (VmHWM) measures this read only: it must grow by less than 400 bytes a move
+  // (a Move is 104 bytes, its file line 8, vectors at most double), i.e. the ~21 bytes
+  // of text per move are never all held, let alone copied.
+  const std::string file =
+      (test::fs::temp_directory_path() / ("scallop-stream-" + std::to_string(::getpid()) + ".txt"))
+          .string();
+  constexpr int kMoves = 1000000;
+  {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    for (int k = 0; k <= kMoves; ++k)
+      std::fprintf(f, "%.4f %.4f %.4f\n", (k % 1000) * 0.01, (k / 1000) * 0.05,
+                   -0.2 - 0.01 * (k % 7));
+    std::fclose(f);
+  }
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const long before = statusKb("VmRSS:");
+    const ToolPathFile read = readToolPathFile(file);
+    const long peak = statusKb("VmHWM:");
+    const long grown[2] = {peak - before, long(read.path.moves.size())};
+    (void)!::write(fds[1], grown, sizeof grown);
+    ::_exit(0);
+  }
+  long grown[2] = {0, 0};
+  const ssize_t got = ::read(fds[0], grown, sizeof grown);
+  ::waitpid(pid, nullptr, 0);
+  ::close(fds[0]);
+  ::close(fds[1]);
+  std::remove(file.c_str());
+  ASSERT_EQ(got, ssize_t(sizeof grown));
+  ASSERT_EQ(grown[1], kMoves);
+  const double bytesPerMove = double(grown[0]) * 1024 / kMoves;
+  RecordProperty("bytes_per_move", std::to_string(bytesPerMove));
+  EXPECT_LT(bytesPerMove, 400) << grown[0] << " KB for " << kMoves << " moves";
+  std::printf("reading 1e6 CL moves: peak resident size grew by %.0f bytes a move\n", bytesPerMove);
+}
+
+}  // namespace
+}  // namespace scallop
