@@ -179,6 +179,19 @@ void deviceError(void* user, RTCError code, const char* message) {
 
 }  // namespace
 
+double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
+                       const SceneOptions& options) {
+  if (options.tileSize > 0) return options.tileSize;
+  // Tiles of R/8 keep the box bounds tight on long moves; a short move gets at most
+  // ~N tiles, since bounding costs 5 exact evaluations a tile and the per-cell plane
+  // test keeps the culling sharp anyway. Moves shorter than the cutter radius (CAM
+  // paths: thousands overlap each cell) get 16: measured on B3, 4x less build time and
+  // no more evaluations per cell than with 64; B1's long passes keep 64 (with 16 they
+  // need 30% more evaluations per cell).
+  const double tiles = moveLength < cutterRadius ? 16 : 64;
+  return std::max(cutterRadius / 8, std::sqrt(boxArea / tiles));
+}
+
 // --- Building the culling tiles -------------------------------------------------------
 // For one segment, over one tile: the swept solid C is convex, so every plane with a
 // downward normal N through C's support value h_C(N) lies below all of C; on the tile
@@ -192,18 +205,8 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
     const SweptSegment& seg = segments[k];
     const Box3 box = seg.bounds();
     if (box.min.z >= stockTop) return;  // never below the stock top: cannot cut
-    // Tiles of R/8 keep the box bounds tight on long moves; a short move gets at most
-    // ~kMaxTiles tiles, since bounding costs 5 exact evaluations a tile and the
-    // per-cell plane test keeps the culling sharp anyway. Moves shorter than the
-    // cutter radius (CAM paths: thousands overlap each cell) get 16: measured on B3,
-    // 4x less build time and no more evaluations per cell than with 64; B1's long
-    // passes keep 64 (with 16 they need 30% more evaluations per cell).
-    const double moveLength = length(seg.end() - seg.start());
-    const double kMaxTiles = moveLength < seg.cutter().radius ? 16 : 64;
-    const double area = (box.max.x - box.min.x) * (box.max.y - box.min.y);
-    const double T = options.tileSize > 0
-                         ? options.tileSize
-                         : std::max(seg.cutter().radius / 8, std::sqrt(area / kMaxTiles));
+    const double T = cullingTileSide(seg.cutter().radius, length(seg.end() - seg.start()),
+                                     (box.max.x - box.min.x) * (box.max.y - box.min.y), options);
     const int nx = std::max(1, int(std::ceil((box.max.x - box.min.x) / T)));
     const int ny = std::max(1, int(std::ceil((box.max.y - box.min.y) / T)));
     const double tx = (box.max.x - box.min.x) / nx, ty = (box.max.y - box.min.y) / ny;

@@ -27,6 +27,13 @@ struct SceneOptions {
   double regionHalfSize = 0;
 };
 
+// The side (mm) of the culling tiles of a segment whose xy box has the given area
+// (mm^2): SceneOptions::tileSize if set, else max(R / 8, sqrt(area / N)) with N = 16
+// tiles for moves shorter than the cutter radius R and 64 otherwise. Memory estimates
+// (tools/job.cpp) use the same rule.
+double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
+                       const SceneOptions& options);
+
 struct SceneStats {
   size_t segments = 0;
   size_t tiles = 0;             // Embree primitives

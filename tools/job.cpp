@@ -9,6 +9,7 @@
 #include <sstream>
 #include <vector>
 
+#include "raycast/swept_scene.h"
 #include "sweep/input_error.h"
 #include "tools/stl_io.h"
 #include "tools/tool_path_file.h"
@@ -238,10 +239,11 @@ double availableMemoryBytes() {
 
 void checkSceneFitsMemory(const Job& job) {
   // The culling scene (raycast/swept_scene.cpp) cuts each move's xy box into tiles of
-  // side T = max(R/8, sqrt(area/64)) and keeps those the cutter reaches below the
-  // stock top. Measured (1e6 short 3-axis moves, ball R = 1: 33.8e6 tiles, 18.5 GB
-  // peak): ~500 bytes a tile (box, planes, Embree BVH) and about half the tile grid
-  // kept; plus the move, its swept segment and its file line. An estimate, used only
+  // side cullingTileSide() and keeps those the cutter reaches below the stock top.
+  // Measured (1e6 short 3-axis moves, ball R = 1: 33.8e6 tiles, 18.5 GB peak, before
+  // short moves got 16 tiles instead of 64): ~500 bytes a tile (box, planes, Embree
+  // BVH) and about half the tile grid kept; plus the move, its swept segment and its
+  // file line. An estimate, used only
   // to refuse what clearly cannot run; moves that turn the axis are subdivided into
   // more segments than counted here, so it errs low, never high.
   constexpr double kBytesPerTile = 500, kTilesKept = 0.5, kBytesPerMove = 400;
@@ -256,7 +258,9 @@ void checkSceneFitsMemory(const Job& job) {
     const double reach = 2 * (R + flute * lean);
     const double w = std::fabs(m.to.tip.x - m.from.tip.x) + reach;
     const double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
-    const double T = std::fmax(R / 8, std::sqrt(w * h / 64));
+    const double length =
+        std::hypot(m.to.tip.x - m.from.tip.x, m.to.tip.y - m.from.tip.y, m.to.tip.z - m.from.tip.z);
+    const double T = cullingTileSide(R, length, w * h, SceneOptions());
     need += kBytesPerMove + kTilesKept * kBytesPerTile * std::ceil(w / T) * std::ceil(h / T);
     ++moves;
   }

@@ -19,7 +19,8 @@ namespace scallop {
 namespace {
 
 // Short 3-axis moves of a ball R = 1 cutting 0.2 mm deep, as in the 1e6-move
-// measurement of checkSceneFitsMemory (~18.5 KB of scene per move).
+// measurement of checkSceneFitsMemory (estimated ~5.4 KB of scene per move: 20 tiles,
+// since moves shorter than R get at most ~16 tiles, see cullingTileSide).
 Job shortMoves(size_t n) {
   Job job = parseJob(R"({"tool": {"type": "ball", "radius": 1},
     "stock": {"min": [0, 0, -1], "max": [20, 20, 0]}, "grid": {"spacing": 0.1},
@@ -35,7 +36,7 @@ Job shortMoves(size_t n) {
 TEST(ResourceGuard, SceneLargerThanMemoryIsRefusedBeforeBuilding) {
   // Enough moves that even the estimate's per-move floor exceeds what is available.
   const double available = availableMemoryBytes();
-  const size_t n = size_t(std::ceil(available / 8000));
+  const size_t n = size_t(std::ceil(available / 4000));
   try {
     checkSceneFitsMemory(shortMoves(n));
     FAIL() << n << " moves were accepted with " << available << " bytes available";
