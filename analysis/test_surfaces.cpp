@@ -69,9 +69,10 @@ double surfaceHeight(const SurfaceSpec& spec, double x, double y) {
 }
 
 TriangleMesh makeTestSurface(const SurfaceSpec& spec) {
-  if (!(spec.sizeX > 0) || !(spec.sizeY > 0) || !std::isfinite(spec.sizeX) ||
-      !std::isfinite(spec.sizeY))
-    throw InputError("--size", "both sizes must be positive finite lengths in mm");
+  // Lengths beyond 1 km (1e6 mm) are refused, as everywhere in scallop: at such scales
+  // the mesh's float coordinates (STL) lose every micrometre.
+  if (!(spec.sizeX > 0) || !(spec.sizeY > 0) || !(spec.sizeX <= 1e6) || !(spec.sizeY <= 1e6))
+    throw InputError("--size", "both sizes must be lengths in (0, 1e6] mm");
   if (spec.facets < 2 || spec.facets > 50000000)
     throw InputError("--facets", "must be between 2 and 50000000");
   if (!std::isfinite(spec.height) || !std::isfinite(spec.troughRadius))

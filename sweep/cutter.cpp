@@ -1,6 +1,7 @@
 #include "sweep/cutter.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "sweep/input_error.h"
@@ -33,6 +34,12 @@ void requireFinite(double v, const std::string& field) {
     throw InputError(field, "must be a finite number of mm, got " + std::to_string(v));
 }
 
+std::string fmtLength(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
 }  // namespace
 
 Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double fluteLength,
@@ -42,6 +49,9 @@ Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double 
   const std::string flField = fieldPrefix + ".flute_length";
   requireFinite(radius, rField);
   if (radius <= 0) throw InputError(rField, "must be > 0 mm, got " + std::to_string(radius));
+  // 1 km: beyond it no result would mean anything at micrometre resolution (and the
+  // scene's tile counts would overflow); the job reader applies the same bound.
+  if (radius > 1e6) throw InputError(rField, "must be <= 1e6 mm (1 km), got " + fmtLength(radius));
 
   Cutter c;
   c.type = type;
@@ -65,6 +75,8 @@ Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double 
   if (std::isnan(fluteLength) || std::isinf(fluteLength))
     throw InputError(flField, "must be a finite number of mm");
   c.fluteLength = fluteLength > 0 ? fluteLength : 4 * radius;
+  if (c.fluteLength > 4e6)
+    throw InputError(flField, "must be <= 4e6 mm, got " + fmtLength(c.fluteLength));
   // The flute must at least contain the rounded bottom, or the solid is not the one
   // described in CONVENTIONS.md.
   if (c.fluteLength < c.cornerRadius)

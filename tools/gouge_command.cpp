@@ -29,9 +29,10 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Lengths are bounded by 1 km (1e6 mm) as everywhere in scallop.
 void requirePositive(double v, const char* field, const char* what) {
-  if (!(v > 0) || !std::isfinite(v))
-    throw InputError(field, fmt::format("{} must be a positive finite number, got {}", what, v));
+  if (!(v > 0) || !(v <= 1e6))
+    throw InputError(field, fmt::format("{} must be in (0, 1e6], got {}", what, v));
 }
 
 void writePostures(const StrategyResult& r, const std::string& path) {

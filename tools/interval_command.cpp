@@ -117,8 +117,9 @@ void checkAngleOption(const char* option, double deg) {
 Cutter cutterFromOptions(const std::string& tool, double radius, double cornerRadius,
                          bool cornerGiven) {
   const CutterType type = parseCutterType(tool, "--tool");
-  if (!std::isfinite(radius) || radius <= 0)
-    throw InputError("--radius", "must be a length > 0 mm, got " + fmt::format("{:g}", radius));
+  if (!(radius > 0) || !(radius <= 1e6))
+    throw InputError("--radius",
+                     "must be a length in (0, 1e6] mm, got " + fmt::format("{:g}", radius));
   if (type != CutterType::Bull) {
     if (cornerGiven)
       throw InputError("--corner-radius",
