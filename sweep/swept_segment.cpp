@@ -70,6 +70,15 @@ struct SupportWithSlope {
   Vec3 point, slope;
 };
 
+// K's support point for a direction v with unit radial part e: the top rim (s = L) when v
+// points towards the shank (`top`), else the torus point, bottom rim + r v / |v|
+// (`rOverLength` = r / |v|). The one place these two formulas are written.
+Vec3 rimOrTorusPoint(const Cutter& c, const Vec3& a, const Vec3& e, const Vec3& v,
+                     double rOverLength, bool top) {
+  if (top) return a * c.fluteLength + e * c.radius;
+  return a * c.cornerRadius + e * c.bottomRadius() + v * rOverLength;
+}
+
 SupportWithSlope supportWithSlope(const Cutter& c, const Vec3& a, const Vec3& v, const Vec3& dv) {
   const double va = dot(v, a);
   // The radial part of v, re-orthogonalised: for v (anti)parallel to a the first
@@ -87,16 +96,13 @@ SupportWithSlope supportWithSlope(const Cutter& c, const Vec3& a, const Vec3& v,
     const Vec3 dperp = dv - a * dot(dv, a);
     de = (dperp - e * dot(e, dperp)) / lp;
   }
-  if (va > 0) {
-    // Pointing towards the shank: the rim of the flat top at s = L.
-    return {a * c.fluteLength + e * c.radius, de * c.radius};
-  }
-  // Pointing down or sideways: the bottom rim of the core (+) r times the unit direction,
-  // i.e. the torus (ball, or the sharp rim of a flat cutter when r = 0).
+  // Pointing towards the shank: the rim of the flat top at s = L. Pointing down or
+  // sideways: the torus (ball, or the sharp rim of a flat cutter when r = 0).
+  const Vec3 point = rimOrTorusPoint(c, a, e, v, c.cornerRadius / len, va > 0);
+  if (va > 0) return {point, de * c.radius};
   const Vec3 vh = v / len;
   const Vec3 dvh = (dv - vh * dot(vh, dv)) / len;
-  return {a * c.cornerRadius + e * c.bottomRadius() + v * (c.cornerRadius / len),
-          radial ? de * c.bottomRadius() + dvh * c.cornerRadius : Vec3{}};
+  return {point, radial ? de * c.bottomRadius() + dvh * c.cornerRadius : Vec3{}};
 }
 
 }  // namespace
@@ -286,7 +292,7 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
     const Vec3 v = direction(t);
     if (u * u * A + 4 * t * u * B + 4 * t * t * C <= 1e-20) return cutterSupport(cutter_, axis_, v);
     const Vec3 e = normalize(v - axis_ * dot(v, axis_));
-    return u * na + 2 * t * ma > 0 ? axis_ * L + e * R : axis_ * r + e * Rb + v * (r / (1 + t * t));
+    return rimOrTorusPoint(cutter_, axis_, e, v, r / (1 + t * t), u * na + 2 * t * ma > 0);
   };
   // ... moved onto P (it is on P to round-off when f(t) ~ 0).
   auto pointOnP = [&](double t) {
