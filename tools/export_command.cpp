@@ -11,6 +11,7 @@
 #include "analysis/profile_metrology.h"
 #include "sweep/input_error.h"
 #include "tools/command.h"
+#include "tools/file_names.h"
 #include "tools/height_export.h"
 #include "tools/height_images.h"
 #include "tools/x3p_writer.h"
@@ -26,9 +27,7 @@ struct ExportArgs {
 };
 
 int runExport(const ExportArgs& args) {
-  std::string ext = std::filesystem::path(args.to).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lowerExtension(args.to);
   const bool known = ext == ".x3p" || ext == ".png" || ext == ".tif" || ext == ".tiff" ||
                      ext == ".gsf" || ext == ".exr" || ext == ".csv";
   if (!known || (ext == ".csv") != !args.profile.empty()) {

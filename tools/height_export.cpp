@@ -13,20 +13,10 @@
 
 #include "sweep/input_error.h"
 #include "tools/atomic_file.h"
+#include "tools/file_names.h"
 #include "tools/height_images.h"
 
 namespace scallop {
-
-namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
-}  // namespace
 
 ZMap readHeightFile(const std::string& path) {
   const std::string ext = lowerExtension(path);

@@ -13,6 +13,7 @@
 #include "sweep/input_error.h"
 #include "sweep/swept_segment.h"
 #include "tools/apt_reader.h"
+#include "tools/file_names.h"
 #include "tools/gcode_reader.h"
 
 namespace scallop {
@@ -110,12 +111,6 @@ ToolPath parseToolPath(const std::string& text, const std::string& source) {
 }
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 // A ".cl" file holding plain "x y z" lines (OpenCAMLib's habit) rather than APT: its
 // first line that is neither blank nor a comment starts with a number.
