@@ -359,10 +359,18 @@ CellContext makeContext(double x, double y, double originZ, double ceiling,
 
 double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& evaluations,
                                 QueryCache* cache, uint32_t* winner) const {
+  const uint32_t guess = winner ? *winner : UINT32_MAX;
   if (winner) *winner = UINT32_MAX;
   if (impl_->tiles.empty()) return ceiling;
   CellContext cell = makeContext(x, y, impl_->originZ, ceiling, cache);
-  RTCRayHit rh = upwardRay(x, y, impl_->originZ, ceiling);
+  // The guessed segment's height, found first, shortens the ray before it starts.
+  if (guess < impl_->segments.size()) {
+    SectionMemo* memo = cache ? &cache->memo[guess % QueryCache::kSlots] : nullptr;
+    ++cell.evaluations;
+    const LowestPoint lp = impl_->segments[guess].lowestPoint(x, y, memo, ceiling);
+    if (lp.hit && lp.z < ceiling) cell.best = lp.z, cell.winner = guess;
+  }
+  RTCRayHit rh = upwardRay(x, y, impl_->originZ, cell.best);
   rtcIntersect1(impl_->scene, &cell.embree, &rh);
   evaluations += cell.evaluations;
   if (winner) *winner = cell.winner;

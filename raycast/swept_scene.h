@@ -58,7 +58,9 @@ class SweptScene {
   // The lowest height at (x, y) over all segments, or `ceiling` if none is lower.
   // `evaluations` is incremented by the number of exact evaluations made.
   // `winner`, if given, receives the segment of the returned height (UINT32_MAX if
-  // the ceiling was not beaten).
+  // the ceiling was not beaten). If it names a segment on entry (a guess, such as a
+  // neighbour's winner), that one is evaluated first: its height prunes the others
+  // from the start. The height returned does not depend on the guess.
   double lowestHeight(double x, double y, double ceiling, uint64_t& evaluations,
                       QueryCache* cache = nullptr, uint32_t* winner = nullptr) const;
 

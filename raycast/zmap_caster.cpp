@@ -24,7 +24,7 @@ namespace {
 //     (lowestHeightAmong), which equals lowestHeight() cell by cell.
 void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int64_t j0, int64_t j1,
                 std::vector<SweptScene::Candidate>& candidates, SweptScene::QueryCache& cache,
-                uint64_t& evals) {
+                uint32_t& previousWinner, uint64_t& evals) {
   const GridSpec& g = map.grid();
   const double x0 = g.cellCentreX(i0), x1 = g.cellCentreX(i1 - 1);
   const double y0 = g.cellCentreY(j0), y1 = g.cellCentreY(j1 - 1);
@@ -32,8 +32,9 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
   for (int64_t j = j0; j < j1; ++j)
     for (int64_t i = i0; i < i1; ++i) ceiling = std::max(ceiling, map.at(i, j));
 
-  uint32_t winner = UINT32_MAX;
+  uint32_t winner = previousWinner;
   scene.lowestHeight(0.5 * (x0 + x1), 0.5 * (y0 + y1), ceiling, evals, &cache, &winner);
+  if (winner != UINT32_MAX) previousWinner = winner;
   double upper = ceiling;
   if (winner != UINT32_MAX) {
     const SweptSegment& w = scene.segments()[winner];
@@ -70,10 +71,11 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
 CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   const GridSpec& g = map.grid();
-  // Regions no wider than the scene's tile boxes were grown for; 1 means cell by cell.
+  // Regions no wider than the scene's tile boxes were grown for (a region of n cells
+  // spans n - 1 spacings between its outer cell centres); 1 means cell by cell.
   const int64_t region = std::max<int64_t>(
       1, std::min(options.regionCells,
-                  int64_t(std::floor(2 * scene.regionHalfSize() / g.spacing * (1 - 1e-9))) + 1));
+                  int64_t(std::floor(2 * scene.regionHalfSize() / g.spacing + 1e-9)) + 1));
 
   CastStats stats;
   stats.exactEvaluations = forEachCellTile(
@@ -81,14 +83,19 @@ CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& option
         uint64_t evals = 0;
         SweptScene::QueryCache cache;
         thread_local std::vector<SweptScene::Candidate> candidates;
-        for (int64_t rj = j0; rj < j1; rj += region) {
-          for (int64_t ri = i0; ri < i1; ri += region) {
-            const int64_t ri1 = std::min(i1, ri + region), rj1 = std::min(j1, rj + region);
+        uint32_t previousWinner = UINT32_MAX;  // the last region's centre winner
+        // The tile is cut into equal regions (no thin leftover strips: each region
+        // pays the same set-up whatever its size).
+        const int64_t nx = (i1 - i0 + region - 1) / region, ny = (j1 - j0 + region - 1) / region;
+        for (int64_t b = 0; b < ny; ++b) {
+          for (int64_t a = 0; a < nx; ++a) {
+            const int64_t ri = i0 + (i1 - i0) * a / nx, ri1 = i0 + (i1 - i0) * (a + 1) / nx;
+            const int64_t rj = j0 + (j1 - j0) * b / ny, rj1 = j0 + (j1 - j0) * (b + 1) / ny;
             if (region == 1) {
               map.at(ri, rj) = scene.lowestHeight(g.cellCentreX(ri), g.cellCentreY(rj),
                                                   map.at(ri, rj), evals, &cache);
             } else {
-              castRegion(scene, map, ri, ri1, rj, rj1, candidates, cache, evals);
+              castRegion(scene, map, ri, ri1, rj, rj1, candidates, cache, previousWinner, evals);
             }
           }
         }

@@ -11,7 +11,7 @@ namespace scallop {
 
 struct CastOptions {
   int64_t tileCells = 64;    // cells per side of a parallel work item
-  int64_t regionCells = 16;  // cells per side of a candidate region (one Embree ray each)
+  int64_t regionCells = 32;  // cells per side of a candidate region (one Embree ray each)
   // Called from worker threads (serialised) with cells done so far and the total.
   std::function<void(int64_t done, int64_t total)> progress;
 };

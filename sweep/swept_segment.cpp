@@ -111,17 +111,60 @@ Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
   return supportWithSlope(c, a, dir, Vec3{}).point;
 }
 
-LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y, double zBelow) {
-  const double r = c.cornerRadius, L = c.fluteLength;
-  // Start below the lowest point of K, where Phi > 0 and (if l hits K) decreasing; or,
-  // nearer, just below the caller's proven bound.
-  const double zMin = cutterSupport(c, a, Vec3{0, 0, -1}).z;
-  double z = std::max(zMin - 1e-3 * c.radius - 1e-9, zBelow - 1e-9 * (1 + std::fabs(zBelow)));
+namespace {
 
-  LowestPoint out;
+// The highest of two supporting planes of K on the vertical line through (x, y), a
+// lower bound of Phi's lowest root that is tight where the line meets the bottom face
+// or the torus near its point at z0:
+//  - the bottom face's plane s = 0 (K lies in s >= 0), exact where the line crosses
+//    the face itself;
+//  - the torus's tangent plane at the point whose nearest spine point (the circle of
+//    radius Rb at s = r) lies in the radial direction e of the line's point at z0, at
+//    the torus angle beta with Rb + r sin(beta) = that point's distance from the axis.
+//    Its unit normal N = e sin(beta) - a cos(beta) has support value
+//    h_K(N) = N . (r a + Rb e) + r, so z >= (h_K(N) - N_x x - N_y y) / N_z (N_z < 0).
+// The axis is nearly vertical wherever a vertical line meets the bottom, so the
+// distance from the axis changes slowly along the line and z0 need not be close.
+struct PlaneBound {
+  double z = -HUGE_VAL;
+  Vec3 normal{0, 0, -1};  // the plane's outward unit normal
+};
+PlaneBound supportingPlaneBound(const Cutter& c, const Vec3& a, double x, double y, double z0) {
+  const double r = c.cornerRadius, Rb = c.bottomRadius();
+  PlaneBound bound;
+  if (a.z > 0) bound = {-(a.x * x + a.y * y) / a.z, -a};
+  const Vec3 p{x, y, z0};
+  const Vec3 perp = p - a * dot(p, a);
+  const double rho = length(perp);
+  if (r > 0 && rho > Rb) {
+    const Vec3 e = perp / rho;
+    const double sinB = std::min(1.0, (rho - Rb) / r), cosB = std::sqrt(1 - sinB * sinB);
+    const Vec3 N = e * sinB - a * cosB;
+    if (N.z < -1e-3) {
+      const double h = dot(N, a * r + e * Rb) + r;
+      const double z = (h - N.x * x - N.y * y) / N.z;
+      if (z > bound.z) bound = {z, N};
+    }
+  }
+  return bound;
+}
+
+// Newton's method on Phi from z, which must lie below Phi's lowest root on the line.
+struct NewtonResult {
+  LowestPoint point;
+  // A miss decided at the starting point itself, or a hit there with no normal: the
+  // caller starts again from below.
+  bool retry = false;
+};
+NewtonResult newtonFromBelow(const Cutter& c, const Vec3& a, double x, double y, double z,
+                             const Vec3& normalBelow) {
+  const double r = c.cornerRadius, L = c.fluteLength;
+  NewtonResult result;
+  LowestPoint& out = result.point;
   // The gradient at the last iterate outside K: a valid outward normal in the limit.
   // (At the root itself the distance gradient vanishes for a flat cutter, r = 0.)
-  Vec3 outside{0, 0, -1};
+  // Before the first step: the normal of the plane the start came from (or zero).
+  Vec3 outside = normalBelow;
   for (int iter = 0; iter < 200; ++iter) {
     const Vec3 p{x, y, z};
     const DistanceToCore d = distanceToCore(c, a, p);
@@ -135,16 +178,39 @@ LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y
       grad = a;
     }
     if (phi <= 0) {  // reached the boundary (only ever from below, up to round-off)
+      // At a tight start (inside K by round-off) the distance gradient is the normal of
+      // the offset surface there; in the core itself (the flat bottom of a flat cutter)
+      // it vanishes, and the start plane's normal is the normal.
+      const bool useGrad = (phi == 0 || iter == 0) && length(grad) > 0;
+      if (!useGrad && length(outside) == 0) {  // no normal known: start again below
+        result.retry = true;
+        return result;
+      }
       out.hit = true;
       out.z = z;
-      out.normal = normalize(phi < 0 || length(grad) == 0 ? outside : grad);
-      return out;
+      out.normal = normalize(useGrad ? grad : outside);
+      return result;
     }
     outside = grad;
     // Phi > 0 and not decreasing: l stays outside K above this point.
-    if (!(dphi < 0)) return out;
+    if (!(dphi < 0)) {
+      result.retry = iter == 0;
+      return result;
+    }
     const double step = -phi / dphi;
     z += step;
+    // Newton's error: on the torus branch Phi'' <= 1/r between here and the root (the
+    // distance to a convex set curves by at most 1 / distance, and distance >= r
+    // there), so the new z lies below the root by at most step^2 / (2 r |Phi'|) to
+    // leading order. When that is within round-off, it is the answer: no need for
+    // another evaluation. (Not on the top face's branch, whose kink has no such bound.)
+    if (r > 0 && top + std::fabs(a.z * step) < -1e-9 * (1 + L) &&
+        step * step <= 2e-15 * r * -dphi * (1 + std::fabs(z))) {
+      out.hit = true;
+      out.z = z;
+      out.normal = normalize(grad);
+      return result;
+    }
     if (step < 1e-13 * (1 + std::fabs(z))) {
       // Converged to within round-off, possibly on a grazing line where Phi' -> 0;
       // accept only if Phi really reached zero to within the same round-off.
@@ -153,15 +219,45 @@ LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y
         out.z = z;
         out.normal = normalize(grad);
       }
-      return out;
+      return result;
     }
   }
-  return out;
+  return result;
+}
+
+// The lowest point of K on the line, given K's lowest z (zMin) and a proven lower bound
+// zBelow of the answer: Newton starts at the highest lower bound known, less a margin
+// for round-off, so that it starts below the root.
+LowestPoint lowestPointOfCutter(const Cutter& c, const Vec3& a, double zMin, double x, double y,
+                                double zBelow) {
+  // Below the lowest point of K, Phi > 0 and (if l hits K) decreasing.
+  double z = std::max(zMin - 1e-3 * c.radius - 1e-9, zBelow);
+  const PlaneBound plane = supportingPlaneBound(c, a, x, y, z);
+  const Vec3 normal = plane.z > z ? plane.normal : Vec3{};
+  z = std::max(z, plane.z);
+  // Started at the bound itself, a tight bound is answered by one evaluation of Phi
+  // (Phi <= 0 there: the bound is the root to round-off). A bound above the root by
+  // round-off on a line that only grazes K could look like a miss, and inside a flat
+  // cutter's core the start has no normal: then Newton starts again from below.
+  const NewtonResult tight = newtonFromBelow(c, a, x, y, z, normal);
+  if (!tight.retry) return tight.point;
+  return newtonFromBelow(c, a, x, y, z - 1e-9 * (1 + std::fabs(z)), Vec3{0, 0, -1}).point;
+}
+
+}  // namespace
+
+LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y, double zBelow) {
+  return lowestPointOfCutter(c, a, cutterSupport(c, a, Vec3{0, 0, -1}).z, x, y, zBelow);
 }
 
 SweptSegment::SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& end,
                            const Vec3& axis)
-    : cutter_(cutter), start_(start), end_(end), axis_(axis), delta_(end - start) {
+    : cutter_(cutter),
+      start_(start),
+      end_(end),
+      axis_(axis),
+      delta_(end - start),
+      zMin_(cutterSupport(cutter, axis, Vec3{0, 0, -1}).z) {
   // The frame of the plane P (step 1), the same for every vertical line.
   w_ = std::hypot(delta_.x, delta_.y);
   if (w_ > 1e-12) {
@@ -379,7 +475,7 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, dou
 
   // A plunge, a retract or a zero-length move: the cutter slides along l itself.
   if (w_ <= 1e-12) {
-    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy);
+    LowestPoint lp = lowestPointOfCutter(cutter_, axis_, zMin_, qx, qy, -HUGE_VAL);
     lp.z += start_.z + std::min(0.0, delta_.z);
     return lp;
   }
@@ -410,13 +506,13 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, dou
   // convex, so it lies above its tangent of slope sigma at the support point: the end
   // cases are no lower than envelopeZ, and their Newton search starts there.
   if (vs > u0) {  // the minimiser lies before the start: the cutter at t = 0
-    LowestPoint lp = cutterLowestPoint(cutter_, axis_, qx, qy, envelopeZ - start_.z);
+    LowestPoint lp = lowestPointOfCutter(cutter_, axis_, zMin_, qx, qy, envelopeZ - start_.z);
     lp.z += start_.z;
     return lp;
   }
   if (vs < u0 - w_) {  // beyond the end: the cutter at t = 1
     LowestPoint lp =
-        cutterLowestPoint(cutter_, axis_, qx - delta_.x, qy - delta_.y, envelopeZ - end_.z);
+        lowestPointOfCutter(cutter_, axis_, zMin_, qx - delta_.x, qy - delta_.y, envelopeZ - end_.z);
     lp.z += end_.z;
     return lp;
   }

@@ -76,6 +76,7 @@ class SweptSegment {
 
   Cutter cutter_;
   Vec3 start_, end_, axis_, delta_;
+  double zMin_ = 0;  // the stationary cutter's lowest z, tip at the origin, mm
   // Step 1's frame: horizontal length w_ of the move, its direction uHat_, the section
   // plane normal m_, slope sigma_, the search direction n_, and K's extremes along m_.
   double w_ = 0, sigma_ = 0;
