@@ -52,11 +52,7 @@ ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGa
     const Vec3 along = normalize(feed - n * dot(feed, n));  // the feed, in the tangent plane
     return normalize(n * std::cos(lean) + along * std::sin(lean));
   };
-  // The tip that makes the cutter with `axis` touch the surface at (x, y): the surface
-  // point minus the cutter's point whose outward normal is -n (its support point).
-  auto touchingTip = [&](double x, double y, const Vec3& axis) {
-    return Vec3{x, y, freeformHeight(x, y)} - cutterSupport(cutter, axis, -normal(x, y));
-  };
+  auto tipAt = [](double x, double y) { return Vec3{x, y, freeformHeight(x, y)}; };
 
   const double x0 = stock.min.x - cutter.radius - 1, x1 = stock.max.x + cutter.radius + 1;
   const int moves = std::max(1, int(std::ceil((x1 - x0) / moveLength - 1e-9)));
@@ -69,8 +65,8 @@ ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGa
       const double xb = x0 + (x1 - x0) * double(i + 1) / moves;
       const Vec3 axis = leanedAxis(0.5 * (xa + xb), y);
       Move mv;
-      mv.from = {touchingTip(xa, y, axis), axis};
-      mv.to = {touchingTip(xb, y, axis), axis};
+      mv.from = {tipAt(xa, y), axis};
+      mv.to = {tipAt(xb, y), axis};
       if (i == 0 && !path.moves.empty()) {  // rapid from the previous pass, not simulated
         Move rapid;
         rapid.from = path.moves.back().to;

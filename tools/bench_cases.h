@@ -41,19 +41,21 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
 
 // B3's tool path: passes along +X, `passGap` mm apart in Y (from stock.min.y while
 // <= stock.max.y), each from a cutter radius + 1 mm before the stock to as far past it,
-// cut into moves of `moveLength` mm, on the surface
-//     z(x, y) = 0.5 sin(2 pi x / 10) cos(2 pi y / 14)   (mm).
-// Each move holds one axis: the unit surface normal at its midpoint leaned `leanDeg`
-// towards the feed (rotated in the plane of the normal and the feed). Its two tips are
-// placed so that the cutter touches the surface at the move's ends (the CAM contact
-// point: tip = surface point - the cutter's support point in direction -normal), so
-// the tip jumps by a few um between moves while the contact stays on the surface.
-// Why not the tip on the surface with the axis interpolated inside each move: with
-// the tip on the surface, each 0.01 rad turn of the axis between moves swings the
-// heel (~2 mm from the tip) by ~0.02 mm in z, leaving dimples at every move end; and
-// interpolating the axis makes sweepToolPath split every 0.05 mm move into ~600
-// constant-axis pieces at the 1e-4 mm tolerance (0.01 rad x 12.4 mm reach of the
-// flutes), ~1.4e7 segments for the 20 x 20 mm stock, which no scene fits in memory.
+// cut into moves of `moveLength` mm whose tips lie on the surface
+//     z(x, y) = 0.5 sin(2 pi x / 10) cos(2 pi y / 14)   (mm),
+// as the performance issue states ("the tip follows z = ..."). Each move holds one
+// axis: the unit surface normal at its midpoint leaned `leanDeg` towards the feed
+// (rotated in the plane of the normal and the feed), so the axis turns by ~0.01 rad
+// between moves and the cutter's toe, 2 mm from the tip, steps by ~0.02 mm in z there:
+// every move end leaves its own dimple, and most cells are cut by a cutter standing
+// at a move end rather than by a move's envelope. That is the true swept solid of
+// this path. Why not interpolate the axis inside each move: sweepToolPath would split
+// every 0.05 mm move into ~600 constant-axis pieces at the 1e-4 mm tolerance
+// (0.01 rad x 12.4 mm reach of the flutes), ~1.4e7 segments for the 20 x 20 mm stock,
+// which no scene fits in memory. (An earlier version placed the tips so that the
+// cutter touched the surface at both move ends; under a 5 deg lean the flat bottom's
+// contact point swings around the rim with the normal, so each 0.05 mm move also
+// moved ~0.15 mm sideways and jumped back: not moves along X.)
 ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGap,
                           double moveLength, double leanDeg);
 double freeformHeight(double x, double y);

@@ -51,16 +51,30 @@ TEST_F(BenchCli, TableOnStdoutAndUsageErrors) {
   EXPECT_EQ(run("bench --area -1").status, 2);
 }
 
-TEST(BenchCases, FreeformPathHoldsOneAxisPerMove) {
+TEST(BenchCases, FreeformPathFollowsTheSurfaceAlongXWithOneAxisPerMove) {
   BenchCaseOptions options;
   options.area = 1;
   const BenchCase b = makeBenchCase("B3", options);
   ASSERT_GT(b.path.cuttingMoves(), 0u);
+  const Move* previous = nullptr;
   for (const Move& mv : b.path.moves) {
-    if (mv.rapid) continue;
-    // Each move holds one unit axis (see makeFreeformPath for why).
+    if (mv.rapid) {
+      previous = nullptr;
+      continue;
+    }
+    // Each move holds one unit axis (see makeFreeformPath for why), runs along +X at
+    // a constant y, and its tips lie on the surface; consecutive moves share a tip.
     EXPECT_NEAR(length(mv.from.axis), 1.0, 1e-12);
     EXPECT_EQ(mv.from.axis, mv.to.axis);
+    EXPECT_EQ(mv.from.tip.y, mv.to.tip.y);
+    EXPECT_NEAR(mv.to.tip.x - mv.from.tip.x, 0.05, 1e-3);
+    for (const Pose& p : {mv.from, mv.to}) {
+      EXPECT_EQ(p.tip.z, freeformHeight(p.tip.x, p.tip.y));
+    }
+    if (previous) {
+      EXPECT_EQ(previous->to.tip, mv.from.tip);
+    }
+    previous = &mv;
   }
   EXPECT_EQ(b.grid.spacing, 0.002);
   EXPECT_EQ(makeBenchCase("B2", options).path.cuttingMoves(), 2u * 180u);
