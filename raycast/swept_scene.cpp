@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -156,8 +157,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   if (bound - planeSlack(bound) >= cell->best) return;
   const SweptSegment& seg = impl->segments[tile.segment];
   ++cell->evaluations;
-  SectionMemo* memo =
-      cell->cache ? &cell->cache->memo[tile.segment % SweptScene::QueryCache::kSlots] : nullptr;
+  SectionMemo* memo = cell->cache ? cell->cache->memoFor(tile.segment, cell->y) : nullptr;
   const LowestPoint lp = seg.lowestPoint(cell->x, cell->y, memo, cell->best);
   if (!lp.hit || !(lp.z < cell->best)) return;
   cell->best = lp.z;
@@ -178,6 +178,13 @@ void deviceError(void* user, RTCError code, const char* message) {
 }
 
 }  // namespace
+
+SectionMemo* SweptScene::QueryCache::memoFor(uint32_t segment, double y) {
+  uint64_t bits;
+  std::memcpy(&bits, &y, sizeof bits);
+  const uint64_t h = (uint64_t(segment) * 0x9E3779B97F4A7C15ull) ^ (bits * 0xC2B2AE3D27D4EB4Full);
+  return &memo[(h >> 40) % kSlots];
+}
 
 double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
                        const SceneOptions& options) {
@@ -365,7 +372,7 @@ double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& ev
   CellContext cell = makeContext(x, y, impl_->originZ, ceiling, cache);
   // The guessed segment's height, found first, shortens the ray before it starts.
   if (guess < impl_->segments.size()) {
-    SectionMemo* memo = cache ? &cache->memo[guess % QueryCache::kSlots] : nullptr;
+    SectionMemo* memo = cache ? cache->memoFor(guess, y) : nullptr;
     ++cell.evaluations;
     const LowestPoint lp = impl_->segments[guess].lowestPoint(x, y, memo, ceiling);
     if (lp.hit && lp.z < ceiling) cell.best = lp.z, cell.winner = guess;
@@ -409,7 +416,7 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
                                    uint64_t& evaluations, QueryCache* cache) const {
   for (Candidate& cand : candidates) {
     const SweptSegment& seg = impl_->segments[cand.segment];
-    SectionMemo* memo = cache ? &cache->memo[cand.segment % QueryCache::kSlots] : nullptr;
+    SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
     ++evaluations;
     const LowestPoint lp = seg.lowestPoint(x, y, memo);
     TilePlane plane;
@@ -417,14 +424,31 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
   }
 }
 
-double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates, double x, double y,
+void SweptScene::orderForBlock(const std::vector<Candidate>& candidates, double x0, double y0,
+                               double x1, double y1, std::vector<BlockEntry>& order) const {
+  order.clear();
+  for (uint32_t k = 0; k < candidates.size(); ++k) {
+    const Candidate& cand = candidates[k];
+    // A plane's minimum over a rectangle is at a corner.
+    double bound = cand.a + std::min(cand.b * x0, cand.b * x1) + std::min(cand.c * y0, cand.c * y1);
+    bound = std::max(bound, planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1));
+    order.push_back({bound - planeSlack(bound), k});
+  }
+  std::sort(order.begin(), order.end(), [](const BlockEntry& p, const BlockEntry& q) {
+    return p.bound != q.bound ? p.bound < q.bound : p.candidate < q.candidate;
+  });
+}
+
+double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
+                                     const std::vector<BlockEntry>& block, double x, double y,
                                      double ceiling, uint64_t& evaluations, QueryCache* cache,
                                      uint32_t* hint) const {
-  // Branch and bound: every candidate's plane bound at (x, y) first; the hinted
-  // candidate is evaluated first, then the others in ascending order of bound,
-  // stopping at the first bound that cannot beat the best height found. Every
-  // candidate skipped has a bound, hence a height, at or above the returned one, so
-  // the minimum does not depend on the order or on the hint.
+  // Branch and bound: the hinted candidate is evaluated first; then, walking the block's
+  // candidates up to the first whose block bound cannot beat the best height found,
+  // each one's plane bound at (x, y), and the survivors in ascending order of it,
+  // stopping at the first bound that cannot beat the best height. Every candidate
+  // skipped has a bound, hence a height, at or above the returned one, so the minimum
+  // does not depend on the order, the block or the hint.
   thread_local std::vector<std::pair<double, uint32_t>> order;
   order.clear();
   double best = ceiling;
@@ -432,7 +456,7 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates, d
   auto evaluate = [&](uint32_t k) {
     const uint32_t segment = candidates[k].segment;
     ++evaluations;
-    SectionMemo* memo = cache ? &cache->memo[segment % QueryCache::kSlots] : nullptr;
+    SectionMemo* memo = cache ? cache->memoFor(segment, y) : nullptr;
     const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, best);
     if (lp.hit && lp.z < best) best = lp.z, winner = k;
   };
@@ -446,7 +470,9 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates, d
   };
   const uint32_t first = hint && *hint < candidates.size() ? *hint : UINT32_MAX;
   if (first != UINT32_MAX && safeBound(candidates[first]) < best) evaluate(first);
-  for (uint32_t k = 0; k < candidates.size(); ++k) {
+  for (const BlockEntry& entry : block) {
+    if (entry.bound >= best) break;
+    const uint32_t k = entry.candidate;
     if (k == first) continue;
     const double bound = safeBound(candidates[k]);
     if (bound < best) order.emplace_back(bound, k);

@@ -48,12 +48,15 @@ class SweptScene {
   SweptScene(const SweptScene&) = delete;
   SweptScene& operator=(const SweptScene&) = delete;
 
-  // Scratch for one thread's consecutive queries: a memo of each segment's last plane
-  // section (direct-mapped by segment). Results do not depend on it, only speed does.
+  // Scratch for one thread's consecutive queries: memos of plane sections, direct-mapped
+  // by (segment, y). Cells of a row share the section of every move along X, and a
+  // block of cells visits a few rows in turn. Results do not depend on it, only speed.
   struct QueryCache {
-    static constexpr size_t kSlots = 128;
+    static constexpr size_t kSlots = 512;
     SectionMemo memo[kSlots];
+    SectionMemo* memoFor(uint32_t segment, double y);
   };
+
 
   // The lowest height at (x, y) over all segments, or `ceiling` if none is lower.
   // `evaluations` is incremented by the number of exact evaluations made.
@@ -81,13 +84,25 @@ class SweptScene {
   // exact evaluation each): near (x, y) it is far tighter than the tile planes.
   void tightenCandidates(std::vector<Candidate>& candidates, double x, double y,
                          uint64_t& evaluations, QueryCache* cache = nullptr) const;
+  // The candidates ordered for a block of cells [x0, x1] x [y0, y1] inside the gathered
+  // region: ascending lower bounds over the block (the tighter of each candidate's own
+  // plane and its tile's planes, at the block's corners). A cell in the block only
+  // needs the candidates whose block bound is below its best height so far.
+  struct BlockEntry {
+    double bound;
+    uint32_t candidate;  // index into the candidates
+  };
+  void orderForBlock(const std::vector<Candidate>& candidates, double x0, double y0, double x1,
+                     double y1, std::vector<BlockEntry>& order) const;
   // The lowest height at (x, y) among the candidates, or `ceiling`: the same value
-  // lowestHeight() returns for any (x, y) inside the gathered region. `hint`, if given,
-  // names a candidate (index) to evaluate first, typically the previous cell's winner:
-  // its height, found first, prunes the others by their bounds; on return it holds the
-  // index of the winner (UINT32_MAX if the ceiling was not beaten). The height does not
-  // depend on the hint, only the number of evaluations does.
-  double lowestHeightAmong(const std::vector<Candidate>& candidates, double x, double y,
+  // lowestHeight() returns for any (x, y) inside the gathered region. `block` is the
+  // order for a block that contains (x, y). `hint`, if given, names a candidate (index)
+  // to evaluate first, typically the previous cell's winner: its height, found first,
+  // prunes the others by their bounds; on return it holds the index of the winner
+  // (UINT32_MAX if the ceiling was not beaten). The height does not depend on the hint
+  // or the block, only the number of evaluations and bound tests does.
+  double lowestHeightAmong(const std::vector<Candidate>& candidates,
+                           const std::vector<BlockEntry>& block, double x, double y,
                            double ceiling, uint64_t& evaluations, QueryCache* cache = nullptr,
                            uint32_t* hint = nullptr) const;
   double regionHalfSize() const { return regionHalfSize_; }

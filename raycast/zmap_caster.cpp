@@ -51,17 +51,32 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
   // plane that saves many per cell. With few, the tile planes do.
   if (candidates.size() > 4)
     scene.tightenCandidates(candidates, 0.5 * (x0 + x1), 0.5 * (y0 + y1), evals, &cache);
+  // Blocks of kBlockCells a side, each with the candidates in the order of their
+  // bounds over the block: a cell stops looking at the first that cannot beat it.
   // Neighbouring cells mostly share their winner: each cell tries its left neighbour's
-  // (or, first in a row, the one below) first, whose height then prunes the others.
-  uint32_t rowStart = UINT32_MAX;
-  for (int64_t j = j0; j < j1; ++j) {
-    uint32_t hint = rowStart;
-    for (int64_t i = i0; i < i1; ++i) {
-      const uint32_t tried = hint;
-      map.at(i, j) = scene.lowestHeightAmong(candidates, g.cellCentreX(i), g.cellCentreY(j),
-                                             map.at(i, j), evals, &cache, &hint);
-      if (hint == UINT32_MAX) hint = tried;  // the ceiling held: keep the old guess
-      if (i == i0) rowStart = hint;
+  // (or, first in a block's row, the one below) first, whose height then prunes the
+  // others.
+  constexpr int64_t kBlockCells = 8;
+  thread_local std::vector<SweptScene::BlockEntry> block;
+  uint32_t blockStart = UINT32_MAX;
+  for (int64_t bj = j0; bj < j1; bj += kBlockCells) {
+    for (int64_t bi = i0; bi < i1; bi += kBlockCells) {
+      const int64_t bi1 = std::min(i1, bi + kBlockCells), bj1 = std::min(j1, bj + kBlockCells);
+      scene.orderForBlock(candidates, g.cellCentreX(bi), g.cellCentreY(bj), g.cellCentreX(bi1 - 1),
+                          g.cellCentreY(bj1 - 1), block);
+      uint32_t rowStart = blockStart;
+      for (int64_t j = bj; j < bj1; ++j) {
+        uint32_t hint = rowStart;
+        for (int64_t i = bi; i < bi1; ++i) {
+          const uint32_t tried = hint;
+          map.at(i, j) = scene.lowestHeightAmong(candidates, block, g.cellCentreX(i),
+                                                 g.cellCentreY(j), map.at(i, j), evals, &cache,
+                                                 &hint);
+          if (hint == UINT32_MAX) hint = tried;  // the ceiling held: keep the old guess
+          if (i == bi) rowStart = hint;
+        }
+      }
+      blockStart = rowStart;
     }
   }
 }
