@@ -40,27 +40,35 @@ namespace scallop {
 
 namespace {
 
-// Distance from p (tool frame) to K0 and its gradient, for the Newton iteration.
+// Distance from p (tool frame) to K0, for the Newton iteration: its value and slope
+// along z on every step, the whole gradient only for the normal of the answer.
 struct DistanceToCore {
-  double value;
-  Vec3 gradient;
+  Vec3 perp;             // p minus its axial part
+  double rho, ds, dr;    // distance from the axis; axial and radial excess over K0
+  double value;          // the distance, sqrt(ds^2 + dr^2)
+
+  Vec3 gradient(const Vec3& a) const {
+    if (!(value > 0)) return {};
+    Vec3 grad = a * (ds / value);
+    if (dr > 0) grad += perp * (dr / (value * rho));
+    return grad;
+  }
+  double slopeZ(const Vec3& a) const {
+    if (!(value > 0)) return 0;
+    return (ds * a.z + (dr > 0 ? dr * perp.z / rho : 0.0)) / value;
+  }
 };
 
 DistanceToCore distanceToCore(const Cutter& c, const Vec3& a, const Vec3& p) {
   const double r = c.cornerRadius, L = c.fluteLength, Rb = c.bottomRadius();
+  DistanceToCore d;
   const double s = dot(p, a);
-  const Vec3 perp = p - a * s;
-  const double rho = length(perp);
-  // Axial and radial excess over the core cylinder.
-  const double ds = s < r ? s - r : (s > L ? s - L : 0.0);
-  const double dr = rho > Rb ? rho - Rb : 0.0;
-  const double dist = std::sqrt(ds * ds + dr * dr);
-  Vec3 grad;
-  if (dist > 0) {
-    grad = a * (ds / dist);
-    if (dr > 0) grad += perp * (dr / (dist * rho));
-  }
-  return {dist, grad};
+  d.perp = p - a * s;
+  d.rho = length(d.perp);
+  d.ds = s < r ? s - r : (s > L ? s - L : 0.0);
+  d.dr = d.rho > Rb ? d.rho - Rb : 0.0;
+  d.value = std::sqrt(d.ds * d.ds + d.dr * d.dr);
+  return d;
 }
 
 // A support point of K in direction v and, on the smooth parts (the torus and the top
@@ -161,37 +169,50 @@ NewtonResult newtonFromBelow(const Cutter& c, const Vec3& a, double x, double y,
   const double r = c.cornerRadius, L = c.fluteLength;
   NewtonResult result;
   LowestPoint& out = result.point;
+  // The gradient of Phi at an iterate: the distance's, or the axis on the top face's
+  // branch.
+  auto gradientOf = [&](const DistanceToCore& d, bool topBranch) {
+    return topBranch ? a : d.gradient(a);
+  };
   // The gradient at the last iterate outside K: a valid outward normal in the limit.
   // (At the root itself the distance gradient vanishes for a flat cutter, r = 0.)
   // Before the first step: the normal of the plane the start came from (or zero).
-  Vec3 outside = normalBelow;
+  Vec3 outsideNormal = normalBelow;
+  DistanceToCore outside{};
+  bool outsideTop = false, haveOutside = false;
+  auto lastOutsideNormal = [&] {
+    return haveOutside ? gradientOf(outside, outsideTop) : outsideNormal;
+  };
   for (int iter = 0; iter < 200; ++iter) {
     const Vec3 p{x, y, z};
     const DistanceToCore d = distanceToCore(c, a, p);
     double phi = d.value - r;
-    double dphi = d.gradient.z;
-    Vec3 grad = d.gradient;
     const double top = dot(p, a) - L;
-    if (top > phi) {
+    const bool topBranch = top > phi;
+    double dphi;
+    if (topBranch) {
       phi = top;
       dphi = a.z;
-      grad = a;
+    } else {
+      dphi = d.slopeZ(a);
     }
     if (phi <= 0) {  // reached the boundary (only ever from below, up to round-off)
       // At a tight start (inside K by round-off) the distance gradient is the normal of
       // the offset surface there; in the core itself (the flat bottom of a flat cutter)
       // it vanishes, and the start plane's normal is the normal.
+      const Vec3 grad = gradientOf(d, topBranch);
       const bool useGrad = (phi == 0 || iter == 0) && length(grad) > 0;
-      if (!useGrad && length(outside) == 0) {  // no normal known: start again below
+      const Vec3 normal = useGrad ? grad : lastOutsideNormal();
+      if (length(normal) == 0) {  // no normal known: start again below
         result.retry = true;
         return result;
       }
       out.hit = true;
       out.z = z;
-      out.normal = normalize(useGrad ? grad : outside);
+      out.normal = normalize(normal);
       return result;
     }
-    outside = grad;
+    outside = d, outsideTop = topBranch, haveOutside = true;
     // Phi > 0 and not decreasing: l stays outside K above this point.
     if (!(dphi < 0)) {
       result.retry = iter == 0;
@@ -208,7 +229,7 @@ NewtonResult newtonFromBelow(const Cutter& c, const Vec3& a, double x, double y,
         step * step <= 2e-15 * r * -dphi * (1 + std::fabs(z))) {
       out.hit = true;
       out.z = z;
-      out.normal = normalize(grad);
+      out.normal = normalize(gradientOf(d, topBranch));
       return result;
     }
     if (step < 1e-13 * (1 + std::fabs(z))) {
@@ -217,7 +238,7 @@ NewtonResult newtonFromBelow(const Cutter& c, const Vec3& a, double x, double y,
       if (phi <= 1e-12 * (1 + c.radius)) {
         out.hit = true;
         out.z = z;
-        out.normal = normalize(grad);
+        out.normal = normalize(gradientOf(d, topBranch));
       }
       return result;
     }
