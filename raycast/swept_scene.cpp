@@ -74,12 +74,13 @@ double planeBoundAt(const TileBox& t, double x, double y) {
     bound = std::max(bound, t.plane[k].a + t.plane[k].b * x + t.plane[k].c * y);
   return bound;
 }
+double planeMinOver(const TilePlane& p, double x0, double y0, double x1, double y1) {
+  return p.a + std::min(p.b * x0, p.b * x1) + std::min(p.c * y0, p.c * y1);
+}
 double planeBoundOver(const TileBox& t, double x0, double y0, double x1, double y1) {
   double bound = -HUGE_VAL;
-  for (uint32_t k = 0; k < t.planes; ++k) {
-    const TilePlane& p = t.plane[k];
-    bound = std::max(bound, p.a + std::min(p.b * x0, p.b * x1) + std::min(p.c * y0, p.c * y1));
-  }
+  for (uint32_t k = 0; k < t.planes; ++k)
+    bound = std::max(bound, planeMinOver(t.plane[k], x0, y0, x1, y1));
   return bound;
 }
 // The plane N . p = h_C(N) below a swept solid C, as z >= a + b x + c y (N.z < 0): it
@@ -429,9 +430,8 @@ void SweptScene::orderForBlock(const std::vector<Candidate>& candidates, double 
   order.clear();
   for (uint32_t k = 0; k < candidates.size(); ++k) {
     const Candidate& cand = candidates[k];
-    // A plane's minimum over a rectangle is at a corner.
-    double bound = cand.a + std::min(cand.b * x0, cand.b * x1) + std::min(cand.c * y0, cand.c * y1);
-    bound = std::max(bound, planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1));
+    const double bound = std::max(planeMinOver({cand.a, cand.b, cand.c}, x0, y0, x1, y1),
+                                  planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1));
     order.push_back({bound - planeSlack(bound), k});
   }
   std::sort(order.begin(), order.end(), [](const BlockEntry& p, const BlockEntry& q) {

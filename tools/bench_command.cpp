@@ -128,12 +128,16 @@ StampComparison compareWithStamping(const BenchCase& b, double side, int threads
     double derived = 0;
     bool passedBefore = false;
     StampOptions chosen;
+    auto stampWith = [&](StampOptions opts, ZMap& stamped) {
+      ProgressBar bar(fmt::format("{} stamping", b.name));
+      opts.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
+      const StampStats stats = stampZMap(segments, stamped, opts);
+      bar.finish();
+      return stats;
+    };
     for (int k = 0; k < 12; ++k) {
       ZMap stamped(w, b.stock.max.z);
-      ProgressBar bar(fmt::format("{} stamping", b.name));
-      options.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
-      const StampStats stats = stampZMap(segments, stamped, options);
-      bar.finish();
+      const StampStats stats = stampWith(options, stamped);
       if (derived == 0) derived = stats.minStep;
       double maxError = -HUGE_VAL, minDifference = HUGE_VAL;
       for (size_t i = 0; i < exact.heights().size(); ++i) {
@@ -163,10 +167,7 @@ StampComparison compareWithStamping(const BenchCase& b, double side, int threads
     // The chosen step once more, for its best of kRuns.
     for (int run = 1; run < kRuns; ++run) {
       ZMap stamped(w, b.stock.max.z);
-      ProgressBar bar(fmt::format("{} stamping", b.name));
-      chosen.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
-      c.stampSeconds = std::min(c.stampSeconds, stampZMap(segments, stamped, chosen).seconds);
-      bar.finish();
+      c.stampSeconds = std::min(c.stampSeconds, stampWith(chosen, stamped).seconds);
     }
   });
   return c;
