@@ -21,7 +21,6 @@ struct BenchCase {
   Box3 stock;
   GridSpec grid;
   ToolPath path;
-  SweepOptions sweep;
 };
 
 struct BenchCaseOptions {

@@ -67,7 +67,6 @@ ExactRun runExact(const BenchCase& b, int threads) {
   tbb::task_arena arena(threads);
   arena.execute([&] {
     SimulationOptions options;
-    options.sweep = b.sweep;
     options.cast.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
     const auto t0 = Clock::now();
     const SimulationResult sim = simulate(b.cutter, b.path, b.stock, b.grid, options);
@@ -98,8 +97,8 @@ StampComparison compareWithStamping(const BenchCase& b, double side, int threads
   c.window = stampWindow(b, side);
   const GridSpec& w = c.window;
   const double wx1 = w.originX + w.nx * w.spacing, wy1 = w.originY + w.ny * w.spacing;
-  std::vector<SweptSegment> segments;
-  for (const SweptSegment& s : sweepToolPath(b.cutter, b.path, b.sweep)) {
+  std::vector<SweptMove> segments;
+  for (const SweptMove& s : sweepToolPath(b.cutter, b.path)) {
     const Box3 box = s.bounds();
     if (box.max.x >= w.originX && box.min.x <= wx1 && box.max.y >= w.originY && box.min.y <= wy1)
       segments.push_back(s);

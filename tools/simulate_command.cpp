@@ -99,7 +99,6 @@ int runSimulate(const SimulateArgs& args) {
                  job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing);
 
   SimulationOptions options;
-  options.sweep.axisTolerance = job.axisTolerance;
   ProgressBar bar("simulating");
   options.cast.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
   SimulationResult sim;
@@ -109,7 +108,7 @@ int runSimulate(const SimulateArgs& args) {
     StampOptions stamp;
     stamp.progress = options.cast.progress;
     StampSimulationResult st =
-        simulateStamped(job.cutter, job.path, job.stock, grid, options.sweep, stamp);
+        simulateStamped(job.cutter, job.path, job.stock, grid, stamp);
     sim.map = std::move(st.map);
     sim.scene.segments = st.segments;
     sim.cast.cells = st.stamp.cells;
@@ -137,7 +136,7 @@ int runSimulate(const SimulateArgs& args) {
   preview.title = title;
   writePreviewPng(sim.map, png, preview);
   const json design =
-      job.design ? designReport(job, sim.map, options.sweep, args.outDir, args.json) : json();
+      job.design ? designReport(job, sim.map, args.outDir, args.json) : json();
   const double writeSeconds = secondsSince(tWrite);
 
   json r;
@@ -154,7 +153,6 @@ int runSimulate(const SimulateArgs& args) {
   if (args.method == "stamp") r["stamp_step_mm"] = stampStep;
   r["sweep"] = {{"cutting_moves", job.path.cuttingMoves()},
                 {"swept_segments", sim.scene.segments},
-                {"axis_tolerance_mm", job.axisTolerance},
                 {"culling_tiles", sim.scene.tiles}};
   r["timings_s"] = {{"scene_build", sim.scene.buildSeconds},
                     {"cast", sim.cast.seconds},
@@ -206,7 +204,7 @@ constexpr const char* kSimulateHelp =
     "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
     "Job file keys: tool{type,radius,corner_radius,flute_length}, stock{min,max},\n"
     "grid{spacing}, path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,\n"
-    "segment_length} | file}, sweep{axis_tolerance},\n"
+    "segment_length} | file},\n"
     "design{stl, gouge_tolerance (mm, default 0.001)}: adds machined - design statistics,\n"
     "gouges with the moves (file lines) that made them, and DIR/deviation.png.\n"
     "Path files by extension: .cl .apt .cls (APT CL data: GOTO, CUTTER, RAPID, ...),\n"

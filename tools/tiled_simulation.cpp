@@ -158,7 +158,6 @@ int runTiledSimulate(const SimulateArgs& args, const Job& job) {
                  (long long)layout.bandRows);
 
   SimulationOptions options;
-  options.sweep.axisTolerance = job.axisTolerance;
   ProgressBar bar("simulating");
   const std::unique_ptr<SweptScene> scene =
       buildScene(job.cutter, job.path, job.stock, grid.spacing, options);
@@ -174,8 +173,7 @@ int runTiledSimulate(const SimulateArgs& args, const Job& job) {
                     {"exr_tile_rows", layout.tileHeight},
                     {"cutting_moves", job.path.cuttingMoves()},
                     {"swept_segments", sceneStats.segments},
-                    {"culling_tiles", sceneStats.tiles},
-                    {"axis_tolerance_mm", job.axisTolerance}};
+                    {"culling_tiles", sceneStats.tiles}};
   std::unique_ptr<TiledOutput> output;
   if (!partial) output = std::make_unique<TiledOutput>(run, args.outDir);
 
@@ -303,7 +301,6 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   r["method"] = "exact";
   r["sweep"] = {{"cutting_moves", run_.at("cutting_moves")},
                 {"swept_segments", run_.at("swept_segments")},
-                {"axis_tolerance_mm", run_.at("axis_tolerance_mm")},
                 {"culling_tiles", run_.at("culling_tiles")}};
   r["timings_s"] = {{"scene_build", sceneSeconds},
                     {"cast", castSeconds_},

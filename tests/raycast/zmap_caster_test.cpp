@@ -87,12 +87,12 @@ TEST(ZMapCaster, EveryCellIsTheMinimumOverAllSegments) {
   // the stock top and every swept segment's exact lowest point.
   const Fixture f = freeformFixture();
   const ZMap map = cast(f, 0.05, 16, 2);
-  const std::vector<SweptSegment> segs = sweepToolPath(f.cutter, f.path);
+  const std::vector<SweptMove> segs = sweepToolPath(f.cutter, f.path);
   const GridSpec& g = map.grid();
   for (int64_t j = 0; j < g.ny; j += 3) {
     for (int64_t i = 0; i < g.nx; i += 3) {
       double want = f.stock.max.z;
-      for (const SweptSegment& s : segs) {
+      for (const SweptMove& s : segs) {
         const LowestPoint lp = s.lowestPoint(g.cellCentreX(i), g.cellCentreY(j));
         if (lp.hit) want = std::min(want, lp.z);
       }
