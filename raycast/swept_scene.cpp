@@ -249,7 +249,7 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
         const double sx[5] = {0.5 * (x0 + x1), x0, x1, x0, x1};
         const double sy[5] = {0.5 * (y0 + y1), y0, y0, y1, y1};
         for (int s = 0; s < kSamplesPerTile; ++s) {
-          const LowestPoint lp = seg.lowestPoint(sx[s], sy[s]);
+          const LowestPoint lp = seg.planeHint(sx[s], sy[s]);
           ++evalsPerSegment[k];
           TilePlane plane;
           if (!planeFrom(seg, lp, sx[s], sy[s], plane)) continue;
@@ -419,7 +419,7 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
     const SweptMove& seg = impl_->segments[cand.segment];
     SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
     ++evaluations;
-    const LowestPoint lp = seg.lowestPoint(x, y, memo);
+    const LowestPoint lp = seg.turning() ? seg.planeHint(x, y) : seg.lowestPoint(x, y, memo);
     TilePlane plane;
     if (planeFrom(seg, lp, x, y, plane)) cand.a = plane.a, cand.b = plane.b, cand.c = plane.c;
   }

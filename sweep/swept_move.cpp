@@ -62,6 +62,7 @@ struct Sample {
   Vec3 tip, axis;
   double z;      // f(t), mm; +inf when l misses K(t)
   Vec3 normal;   // unit, normal.z < 0; zero when no plane is known
+  double hOwn;   // support of K(t) - tip(t) in `normal` (every bound needs it)
   double slope;  // df/dt where known, else NaN
 };
 
@@ -80,7 +81,7 @@ Vec3 steepNormal(const Cutter& c, const Vec3& tip, const Vec3& a, double x, doub
   const double ex = a.x * c.fluteLength, ey = a.y * c.fluteLength, ee = ex * ex + ey * ey;
   const double px = x - tip.x, py = y - tip.y;
   const double s = ee > 0 ? std::clamp((px * ex + py * ey) / ee, 0.0, 1.0) : 0.0;
-  const double dx = px - s * ex, dy = py - s * ey, dd = std::hypot(dx, dy);
+  const double dx = px - s * ex, dy = py - s * ey, dd = std::sqrt(dx * dx + dy * dy);
   if (!(dd > 1e-9)) return {};
   return normalize(Vec3{dx / dd, dy / dd, -1e-3});
 }
@@ -113,11 +114,10 @@ size_t SweptMove::bytesPerMove(bool turning) {
 
 namespace {
 
-// The chord bound of step 2: H >= max over [a.t, b.t] of h_t(N), N unit.
+// The chord bound of step 2: H >= max over [a.t, b.t] of h_t(N), N unit, given the
+// supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
 double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta,
-                   const Sample& a, const Sample& b, const Vec3& N) {
-  const double hKa = dot(N, cutterSupport(c, a.axis, N));
-  const double hKb = dot(N, cutterSupport(c, b.axis, N));
+                   const Sample& a, double hKa, const Sample& b, double hKb, const Vec3& N) {
   const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
   const double w = b.t - a.t;
   if (omega == 0 || w <= 0) return h;
@@ -128,7 +128,8 @@ double supportOver(const Cutter& c, double omega, double reach, const Vec3& delt
   if (u < 0) {
     const double nPerp = std::sqrt(std::max(0.0, 1 - u * u));
     const double sMax = (nPerp * c.radius + 2 * V * w - hKa) / -u;
-    rho = std::min(reach, std::hypot(std::clamp(sMax, 0.0, c.fluteLength), c.radius));
+    const double s = std::clamp(sMax, 0.0, c.fluteLength);
+    rho = std::min(reach, std::sqrt(s * s + c.radius * c.radius));
   }
   return h + omega * omega * rho * w * w / 8;
 }
@@ -142,8 +143,10 @@ double SweptMove::support(const Vec3& dir) const {
   Sample a, b;
   a.t = 0, a.tip = curve_.tip(0), a.axis = curve_.axis(0);
   b.t = 1, b.tip = curve_.tip(1), b.axis = curve_.axis(1);
-  const double h = supportOver(cutter_, curve_.turnRate(), reach_,
-                               curve_.tipEnd() - curve_.tipStart(), a, b, dir / len);
+  const Vec3 N = dir / len;
+  const double h = supportOver(cutter_, curve_.turnRate(), reach_, curve_.tipEnd() - curve_.tipStart(),
+                               a, dot(N, cutterSupport(cutter_, a.axis, N)), b,
+                               dot(N, cutterSupport(cutter_, b.axis, N)), N);
   // Round-off of the few products above, scaled back to dir's length.
   return len * (h + 1e-12 * (1 + std::fabs(h)));
 }
@@ -162,6 +165,10 @@ LowestPoint SweptMove::stationaryLowestPoint(double t, double x, double y) const
   lp.z += tip.z;
   lp.t = t;
   return lp;
+}
+
+LowestPoint SweptMove::planeHint(double x, double y) const {
+  return segment_ ? segment_->lowestPoint(x, y) : stationaryLowestPoint(0.5, x, y);
 }
 
 LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
@@ -197,13 +204,17 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     } else {
       s.normal = steepNormal(c, s.tip, s.axis, x, y);
     }
+    s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c, s.axis, s.normal)) : 0;
     return count++;
   };
   // Step 2's bound over [a.t, b.t] from one end's plane, less its round-off.
   auto planeBound = [&](const Sample& from, const Sample& a, const Sample& b) {
     const Vec3& N = from.normal;
     if (N.z == 0) return -HUGE_VAL;
-    const double H = supportOver(c, omega, reach_, delta, a, b, N);
+    const Sample& other = &from == &a ? b : a;
+    const double hOther = dot(N, cutterSupport(c, other.axis, N));
+    const double H = &from == &a ? supportOver(c, omega, reach_, delta, a, from.hOwn, b, hOther, N)
+                                 : supportOver(c, omega, reach_, delta, a, hOther, b, from.hOwn, N);
     const double nq = N.x * x + N.y * y;
     const double z = (H - nq) / N.z;
     return z - 1e-12 * (1 + std::fabs(H) + std::fabs(nq)) / -N.z;
@@ -218,12 +229,12 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     const Vec3 Nb = curve_.carry(Na, from.t, to.t);
     const double w = b.t - a.t;
     if (std::max(Na.z, Nb.z) + omega * w >= 0) return -HUGE_VAL;  // may turn horizontal
-    const double h = dot(Na, cutterSupport(c, from.axis, Na));
+    const double h = from.hOwn;
     // |g''| <= omega^2 |Q - tip| + 2 omega |p1 - p0| for Q on l at heights in
     // [tip.z - reach, U], the only heights where the bound is claimed.
     double D = 0;
     for (const Sample* e : {&a, &b})
-      D = std::max(D, std::hypot(x - e->tip.x, y - e->tip.y) +
+      D = std::max(D, std::sqrt((x - e->tip.x) * (x - e->tip.x) + (y - e->tip.y) * (y - e->tip.y)) +
                           std::max(std::fabs(U - e->tip.z), reachPlusMove));
     const double margin = (omega * omega * D + 2 * omega * length(delta)) * w * w / 8;
     auto planeZ = [&](const Vec3& N, const Sample& e) {
@@ -253,13 +264,14 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   auto boundOf = [&](int ia, int ib, double U) {
     const Sample &a = samples[(ia)], &b = samples[(ib)];
     if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z)};  // both ends are known
-    const double fixed = std::max(planeBound(a, a, b), planeBound(b, a, b));
-    double moving =
-        std::max(movingPlaneBound(a, b, a, b, U), movingPlaneBound(b, a, a, b, U));
-    // Where the line leaves or grazes a cutter, planes say little: the grown cutter does.
-    if (!(std::max(fixed, moving) >= std::min(U - kProofGap, zTop_)) && !(smooth(a) && smooth(b)))
-      moving = std::max(moving, grownBound(a, b));
-    return Interval{ia, ib, std::max(fixed, moving)};
+    const double enough = std::min(U - kProofGap, zTop_);
+    // The cutter-fixed planes first (tight wherever the line meets the cutters' lower
+    // faces); the world-fixed planes where those do not settle it; where the line
+    // leaves or grazes a cutter, planes say little and the grown cutter decides.
+    double lower = std::max(movingPlaneBound(a, b, a, b, U), movingPlaneBound(b, a, a, b, U));
+    if (!(lower >= enough)) lower = std::max({lower, planeBound(a, a, b), planeBound(b, a, b)});
+    if (!(lower >= enough) && !(smooth(a) && smooth(b))) lower = std::max(lower, grownBound(a, b));
+    return Interval{ia, ib, lower};
   };
 
   const int s0 = sampleAt(0, -HUGE_VAL), s1 = sampleAt(1, -HUGE_VAL);

@@ -38,6 +38,12 @@ class SweptMove {
   // (x, y) (K(t) is convex) at or above the swept solid's heights.
   LowestPoint stationaryLowestPoint(double t, double x, double y) const;
 
+  // A lowest point whose normal makes a good culling plane through support() near
+  // (x, y) (any normal gives a valid one): the exact lowest point for a constant axis,
+  // the cutter at mid-move for a turning move, which costs one stationary evaluation
+  // instead of a search.
+  LowestPoint planeHint(double x, double y) const;
+
   // An upper bound of the swept solid's support function max over the solid of
   // dot(dir, p) (exact for a constant axis). For dir.z < 0 the plane dot(dir, p) =
   // support(dir) lies below every height: the scene's culling planes.
