@@ -102,6 +102,14 @@ RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, d
 // negative: the line misses it by that much in the sense of the profile).
 double deepestDepth(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y);
 
+// Slerp as CONVENTIONS.md writes it ("Tool pose"): sin((1 - t) phi) a0 + sin(t phi) a1
+// over sin(phi), for unit a0, a1 (a0 where they coincide).
+inline Vec3 slerp(const Vec3& a0, const Vec3& a1, double t) {
+  const double phi = std::acos(std::fmax(-1.0, std::fmin(1.0, dot(a0, a1))));
+  if (phi < 1e-12) return a0;
+  return (a0 * std::sin((1 - t) * phi) + a1 * std::sin(t * phi)) / std::sin(phi);
+}
+
 // A pose curve as the reference sees it: tip straight from p0 to p1, the axis any
 // function of t (the tests write slerp and the machines' formulas from CONVENTIONS.md
 // themselves).

@@ -19,13 +19,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Slerp as CONVENTIONS.md writes it, for the reference (not PoseCurve's own form).
-Vec3 slerpFormula(const Vec3& a0, const Vec3& a1, double t) {
-  const double phi = std::acos(std::clamp(dot(a0, a1), -1.0, 1.0));
-  if (phi < 1e-12) return a0;
-  return (a0 * std::sin((1 - t) * phi) + a1 * std::sin(t * phi)) / std::sin(phi);
-}
-
 Vec3 unitFromAngles(double polar, double azimuth) {
   return {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)};
 }
@@ -95,7 +88,7 @@ TEST(SweptMove, RandomTurningMovesAgreeWithBruteForce) {
     const RandomCase rc = randomCase(rng, k);
     const SweptMove move(rc.cutter, PoseCurve::linear({rc.p0, rc.a0}, {rc.p1, rc.a1}));
     ASSERT_TRUE(move.turning());
-    const ref::RefCurve curve{rc.p0, rc.p1, [&](double t) { return slerpFormula(rc.a0, rc.a1, t); }};
+    const ref::RefCurve curve{rc.p0, rc.p1, [&](double t) { return ref::slerp(rc.a0, rc.a1, t); }};
     // Lines through the footprint: around the tip path, out to the reach of the lean.
     const Box3 box = move.bounds();
     for (int q = 0; q < 4; ++q) {
@@ -233,7 +226,7 @@ TEST(SweptMove, SupportBoundsTheSweptSolid) {
       double trueMax = -HUGE_VAL;
       for (int i = 0; i <= 2000; ++i) {
         const double t = i / 2000.0;
-        const Vec3 a = slerpFormula(rc.a0, rc.a1, t);
+        const Vec3 a = ref::slerp(rc.a0, rc.a1, t);
         trueMax = std::max(trueMax, dot(dir, rc.p0 + (rc.p1 - rc.p0) * t) +
                                         ref::supportValue(rc.refCutter, a, dir));
       }
@@ -255,7 +248,7 @@ TEST(PoseCurve, SlerpEndsExactlyAndTurnsAtConstantSpeed) {
   EXPECT_NEAR(c.turnRate(), phi, 1e-12);
   for (double t : {0.1, 0.33, 0.5, 0.9}) {
     EXPECT_NEAR(std::acos(std::clamp(dot(c.axis(t), a0), -1.0, 1.0)), phi * t, 1e-9);
-    EXPECT_NEAR(length(c.axis(t) - slerpFormula(a0, a1, t)), 0, 1e-12);
+    EXPECT_NEAR(length(c.axis(t) - ref::slerp(a0, a1, t)), 0, 1e-12);
     // The axis rate is the derivative of the axis.
     const Vec3 fd = (c.axis(t + 1e-6) - c.axis(t - 1e-6)) / 2e-6;
     EXPECT_NEAR(length(c.axisRate(t) - fd), 0, 1e-6);
