@@ -1,5 +1,5 @@
 // The seeds' tables as printed: the one transcription that the validation run and the
-// tests both read. Numbers are copied from ../shared/seeds; nothing here is computed.
+// tests both read. Numbers are copied from the seed papers (README "The seeds"); nothing here is computed.
 #pragma once
 
 namespace scallop {
