@@ -19,8 +19,8 @@
 #include "analysis/drop_cutter.h"
 #include "analysis/gouge_check.h"
 #include "raycast/simulation.h"
-#include "tools/stl_io.h"
-#include "tools/tool_path_file.h"
+#include "tools/io/stl_io.h"
+#include "tools/io/tool_path_file.h"
 
 namespace scallop {
 namespace {
