@@ -10,10 +10,11 @@
 #include <sstream>
 #include <utility>
 
+#include "sweep/constants.h"
+
 namespace scallop {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double radians(double deg) {
@@ -445,57 +446,72 @@ ProcedureResult scallopHeightBall(double radiusMm, double halfIntervalMm) {
 
 // ---- All procedures --------------------------------------------------------------------------
 
-const std::vector<std::string>& procedureNames() {
-  static const std::vector<std::string> names = {"computational", "sekine", "redonnet", "bedi",
-                                                 "ball"};
-  return names;
-}
+const ProcedureInfo kProcedures[kProcedureCount] = {
+    {Procedure::kComputational, "computational", "seed 000 Fig. 1, Eqs. (1)-(3)",
+     [](double r, double rcr, double rho, double h, double eps) {
+       return halfIntervalComputational(r, rcr, rho, h, eps);
+     },
+     [](double r, double rcr, double rho, double l2, double eps) {
+       return scallopHeightComputational(r, rcr, rho, l2, eps);
+     }},
+    {Procedure::kSekine, "sekine", "seed 000 Eqs. (4)-(8), (12)",
+     [](double r, double rcr, double rho, double h, double) {
+       return halfIntervalSekine(r, rcr, rho, h);
+     },
+     [](double r, double rcr, double rho, double l2, double) {
+       return scallopHeightSekine(r, rcr, rho, l2);
+     }},
+    {Procedure::kRedonnet, "redonnet", "seed 000 Eqs. (9), (8), (12)",
+     [](double r, double rcr, double rho, double h, double) {
+       return halfIntervalRedonnet(r, rcr, rho, h);
+     },
+     [](double r, double rcr, double rho, double l2, double) {
+       return scallopHeightRedonnet(r, rcr, rho, l2);
+     }},
+    {Procedure::kBedi, "bedi", "seed 000 Eqs. (10), (11), (13)",
+     [](double r, double rcr, double rho, double h, double) {
+       return halfIntervalBedi(r, rcr, rho, h);
+     },
+     [](double r, double rcr, double rho, double l2, double) {
+       return scallopHeightBedi(r, rcr, rho, l2);
+     }},
+    {Procedure::kBall, "ball", "seed 001 Eq. (1)",
+     [](double r, double, double, double h, double) { return halfIntervalBall(r, h); },
+     [](double r, double, double, double l2, double) { return scallopHeightBall(r, l2); }},
+};
 
 namespace {
 
-const char* const kSources[] = {"seed 000 Fig. 1, Eqs. (1)-(3)", "seed 000 Eqs. (4)-(8), (12)",
-                                "seed 000 Eqs. (9), (8), (12)", "seed 000 Eqs. (10), (11), (13)",
-                                "seed 001 Eq. (1)"};
-
-// Procedure `index` of procedureNames(); `inverse` selects h from L/2.
+// Procedure `index` of kProcedures; `inverse` selects h from L/2.
 ProcedureResult runProcedure(int index, const ProcedureTool& tool, double leadDeg, double x,
                              double eps, bool inverse) {
   const double r = tool.radiusMm, rcr = tool.cornerRadiusMm;
   const bool ball = tool.type == ProcedureToolType::Ball;
-  if (ball && index >= 1 && index <= 3)
-    return notApplicable(procedureNames()[index] +
+  const Procedure id = kProcedures[index].id;
+  const bool filleted = id != Procedure::kComputational && id != Procedure::kBall;
+  if (ball && filleted)
+    return notApplicable(std::string(kProcedures[index].name) +
                          ": a filleted end mill procedure; the tool is a ball end mill");
-  if (!ball && index == 4)
+  if (!ball && id == Procedure::kBall)
     return notApplicable("ball: the ball end mill formula; the tool is a filleted end mill");
-  switch (index) {
-    case 0:
-      if (!ball)
-        return inverse ? scallopHeightComputational(r, rcr, leadDeg, x, eps)
-                       : halfIntervalComputational(r, rcr, leadDeg, x, eps);
-      if (auto why = firstReason("computational", {checkLength("tool radius R", r)}); !why.empty())
-        return notApplicable(why);
-      // Fig. 1 on the degenerate torus Rb = 0, Rcr = R, the ball's sphere, whose
-      // section is exactly Eq. (1) of seed 001; its inverse is that equation's.
-      return inverse ? scallopHeightBall(r, x) : checkedComputational(0.0, r, leadDeg, x, eps);
-    case 1:
-      return inverse ? scallopHeightSekine(r, rcr, leadDeg, x)
-                     : halfIntervalSekine(r, rcr, leadDeg, x);
-    case 2:
-      return inverse ? scallopHeightRedonnet(r, rcr, leadDeg, x)
-                     : halfIntervalRedonnet(r, rcr, leadDeg, x);
-    case 3:
-      return inverse ? scallopHeightBedi(r, rcr, leadDeg, x) : halfIntervalBedi(r, rcr, leadDeg, x);
-    default:
-      return inverse ? scallopHeightBall(r, x) : halfIntervalBall(r, x);
+  if (ball && id == Procedure::kComputational) {
+    if (auto why = firstReason("computational", {checkLength("tool radius R", r)}); !why.empty())
+      return notApplicable(why);
+    // Fig. 1 on the degenerate torus Rb = 0, Rcr = R, the ball's sphere, whose
+    // section is exactly Eq. (1) of seed 001; its inverse is that equation's.
+    return inverse ? scallopHeightBall(r, x) : checkedComputational(0.0, r, leadDeg, x, eps);
   }
+  const ProcedureInfo& p = kProcedures[index];
+  return inverse ? p.scallopHeight(r, rcr, leadDeg, x, eps)
+                 : p.halfInterval(r, rcr, leadDeg, x, eps);
 }
 
 std::vector<NamedProcedureResult> runAll(const ProcedureTool& tool, double leadDeg, double x,
                                          double eps, bool inverse) {
   std::vector<NamedProcedureResult> out;
-  for (int i = 0; i < static_cast<int>(procedureNames().size()); ++i)
-    out.push_back(
-        {procedureNames()[i], kSources[i], runProcedure(i, tool, leadDeg, x, eps, inverse)});
+  for (int i = 0; i < kProcedureCount; ++i)
+    out.push_back({kProcedures[i].name, kProcedures[i].source,
+                   runProcedure(i, tool, leadDeg, x, eps, inverse)});
   return out;
 }
 

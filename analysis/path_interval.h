@@ -86,16 +86,32 @@ struct ProcedureTool {
   double cornerRadiusMm = 0;  // Rcr; ignored for Ball
 };
 
+// The procedures, in the order every listing (interval, validate, the tests) uses.
+// The first four are seed 000's, for filleted end mills; "ball" is seed 001 Eq. (1).
+enum class Procedure { kComputational, kSekine, kRedonnet, kBedi, kBall };
+constexpr int kProcedureCount = 5;
+
+// One row of the procedure table: what a listing names and cites, and the two
+// directions as plain functions of (R, Rcr, lead in degrees, h or L/2, epsilon for the
+// iterated computational procedure). For "ball", Rcr and the lead are ignored.
+struct ProcedureInfo {
+  Procedure id;
+  const char* name;    // "computational", "sekine", "redonnet", "bedi", "ball"
+  const char* source;  // "seed 000 Eqs. (4)-(8), (12)", ...
+  ProcedureResult (*halfInterval)(double r, double rcr, double leadDeg, double h, double eps);
+  ProcedureResult (*scallopHeight)(double r, double rcr, double leadDeg, double l2, double eps);
+};
+
+// The table, indexed by int(Procedure).
+extern const ProcedureInfo kProcedures[kProcedureCount];
+
 struct NamedProcedureResult {
-  std::string name;    // one of procedureNames()
-  std::string source;  // "seed 000 Eqs. (4)-(8)", ...
+  std::string name;    // kProcedures[i].name
+  std::string source;  // kProcedures[i].source
   ProcedureResult result;
 };
 
-// "computational", "sekine", "redonnet", "bedi", "ball", in this order.
-const std::vector<std::string>& procedureNames();
-
-// L/2 by every procedure, in procedureNames() order. For a ball tool, "computational"
+// L/2 by every procedure, in table order. For a ball tool, "computational"
 // runs Fig. 1 on the degenerate torus Rb = 0 (the ball's sphere) and the three
 // filleted-end formulas are not applicable; for a bull tool "ball" is not applicable.
 std::vector<NamedProcedureResult> halfIntervalProcedures(

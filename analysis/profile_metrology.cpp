@@ -6,13 +6,13 @@
 #include <sstream>
 #include <string>
 
+#include "sweep/constants.h"
 #include "sweep/input_error.h"
 
 namespace scallop {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxSamplingLengths = 5;  // ISO 4288: evaluation length = 5 lr by default
 
 std::string point(double x, double y) {

@@ -2,9 +2,6 @@
 
 namespace scallop {
 
-const char* const kSeed000ProcedureNames[kSeed000Procedures] = {"computational", "sekine",
-                                                                "redonnet", "bedi"};
-
 // Tables 2 and 4 (R = 3, Rcr = 1), then Tables 3 and 5 (R = 6, Rcr = 2).
 const Seed000Condition kSeed000[kSeed000Conditions] = {
     {2, 4, 1, 3, 1, 5, 0.05, {1.442, 1.086, 1.547, 1.437}, {0.050, 0.088, 0.043, 0.050}},

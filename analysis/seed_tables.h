@@ -1,13 +1,15 @@
 // The seeds' tables as printed: the one transcription that the validation run and the
-// tests both read. Numbers are copied from ../shared/seeds; nothing here is computed.
+// tests both read. Numbers are copied from the seed papers (README "The seeds");
+// nothing here is computed.
 #pragma once
 
 namespace scallop {
 
 // Seed 000 (Sekine & Kameya), one condition (column) of Tables 2-5: a filleted end
 // mill of radius R and corner radius Rcr inclined by rho along the feed, target h.
+// Its procedures are the first four of analysis/path_interval.h's kProcedures, in
+// that order.
 constexpr int kSeed000Procedures = 4;
-extern const char* const kSeed000ProcedureNames[kSeed000Procedures];  // the order below
 struct Seed000Condition {
   int lengthTable, heightTable, condition;  // Table 2|3 (L/2), Table 4|5 (h), column 1-4
   double radius, cornerRadius, leadDeg, h;  // mm, mm, deg, mm

@@ -3,13 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sweep/constants.h"
 #include "sweep/input_error.h"
 
 namespace scallop {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 const char* toString(SurfaceShape shape) {
   switch (shape) {

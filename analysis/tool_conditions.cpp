@@ -20,10 +20,10 @@
 #include <sstream>
 #include <utility>
 
+#include "sweep/constants.h"
+
 namespace scallop {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string num(double v) {
   std::ostringstream s;

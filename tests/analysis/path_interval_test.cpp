@@ -10,11 +10,11 @@
 #include <string>
 
 #include "analysis/seed_tables.h"
+#include "sweep/constants.h"
 
 namespace scallop {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kThreeDecimals = 0.0005;  // half a unit of the printed last digit
 
 // One column ("condition") of seed 000 Tables 2-5, as printed (analysis/seed_tables.h).
@@ -379,7 +379,10 @@ TEST(PathIntervalDomain, BediBeyondTheEllipseDepth) {
 
 TEST(PathIntervalProcedures, NamesAndApplicability) {
   const std::vector<std::string> expected = {"computational", "sekine", "redonnet", "bedi", "ball"};
-  EXPECT_EQ(procedureNames(), expected);
+  for (int i = 0; i < kProcedureCount; ++i) {
+    EXPECT_EQ(kProcedures[i].name, expected[size_t(i)]);
+    EXPECT_EQ(int(kProcedures[i].id), i) << "the table is indexed by its enum";
+  }
 
   ProcedureTool bull{ProcedureToolType::Bull, 3, 1};
   auto results = halfIntervalProcedures(bull, 5, 0.05);

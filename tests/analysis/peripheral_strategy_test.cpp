@@ -8,11 +8,10 @@
 #include <cmath>
 
 #include "analysis/test_surfaces.h"
+#include "sweep/constants.h"
 
 namespace scallop {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Two triangles per rectangle, counter-clockwise seen from the +normal side.
 void addQuad(std::vector<std::array<Vec3, 3>>& soup, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {

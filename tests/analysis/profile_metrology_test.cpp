@@ -11,12 +11,11 @@
 
 #include "analysis/sampled_field.h"
 #include "raycast/zmap.h"
+#include "sweep/constants.h"
 #include "sweep/input_error.h"
 
 namespace scallop {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 ZMap field(int64_t nx, int64_t ny, double spacing, const std::function<double(double, double)>& z) {
   return sampledField(0.5, -0.25, nx, ny, spacing, z);

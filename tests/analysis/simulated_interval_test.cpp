@@ -11,11 +11,11 @@
 
 #include "analysis/path_interval.h"
 #include "sweep/brute_force_reference.h"
+#include "sweep/constants.h"
 
 namespace scallop {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kAcceptanceMm = 1e-4;  // the acceptance bound
 constexpr double kExactMm = 1e-6;       // what the exact geometry actually achieves
 

@@ -17,13 +17,13 @@
 
 #include "analysis/sampled_field.h"
 #include "raycast/zmap.h"
+#include "sweep/constants.h"
 #include "sweep/input_error.h"
-#include "tools/height_images.h"
+#include "tools/io/height_images.h"
 
 namespace scallop {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRel = 1e-9;
 
 ZMap field(int64_t nx, int64_t ny, double spacing, const std::function<double(double, double)>& z) {

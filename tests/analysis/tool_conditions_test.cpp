@@ -9,11 +9,11 @@
 #include <string>
 
 #include "analysis/seed_tables.h"
+#include "sweep/constants.h"
 
 namespace scallop {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoDecimals = 0.005;  // half a unit of the printed last digit
 constexpr double kDepthOfCut = kSeed001DepthOfCutMm;
 constexpr double kInclination = kSeed001InclinationDeg;

@@ -12,7 +12,7 @@
 #include "sweep/raster.h"
 #include "sweep/swept_segment.h"
 #include "sweep/tool_path_sweep.h"
-#include "tools/bench_cases.h"
+#include "tools/run/bench_cases.h"
 
 namespace scallop {
 namespace {

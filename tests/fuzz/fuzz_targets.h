@@ -19,12 +19,12 @@
 
 #include "raycast/simulation.h"
 #include "sweep/cutter.h"
-#include "tools/apt_reader.h"
-#include "tools/gcode_reader.h"
-#include "tools/height_images.h"
-#include "tools/job.h"
-#include "tools/stl_io.h"
-#include "tools/tool_path_file.h"
+#include "tools/io/apt_reader.h"
+#include "tools/io/gcode_reader.h"
+#include "tools/io/height_images.h"
+#include "tools/io/job.h"
+#include "tools/io/stl_io.h"
+#include "tools/io/tool_path_file.h"
 
 namespace scallop::fuzz {
 
@@ -51,19 +51,19 @@ inline void fuzzStl(const std::string& bytes) {
   readStl(writeTemp(bytes, ".stl"));
 }
 
-// Plain cutter-location text (tools/tool_path_file.h).
+// Plain cutter-location text (tools/io/tool_path_file.h).
 inline void fuzzToolPath(const std::string& bytes) {
   parseToolPath(bytes, "fuzz.txt");
 }
 
-// APT / CL data (tools/apt_reader.h).
+// APT / CL data (tools/io/apt_reader.h).
 inline void fuzzApt(const std::string& bytes) {
   std::istringstream in(bytes);
   ToolPathFile out;
   readApt(in, "fuzz.apt", out);
 }
 
-// G-code, with arcs at the default chord tolerance (tools/gcode_reader.h).
+// G-code, with arcs at the default chord tolerance (tools/io/gcode_reader.h).
 inline void fuzzGcode(const std::string& bytes) {
   std::istringstream in(bytes);
   ToolPathFile out;

@@ -11,7 +11,7 @@
 
 #include "raycast/simulation.h"
 #include "sweep/raster.h"
-#include "tools/bench_cases.h"
+#include "tools/run/bench_cases.h"
 
 namespace scallop {
 namespace {

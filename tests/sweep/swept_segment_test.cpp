@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sweep/brute_force_reference.h"
+#include "sweep/constants.h"
 #include "sweep/cutter.h"
 
 namespace scallop {
@@ -20,7 +21,6 @@ namespace {
 
 constexpr double kTol = 1e-6;         // mm, CONVENTIONS.md "Units and frames"
 constexpr double kSupportTol = 1e-9;  // mm, the culling plane must really support
-constexpr double kPi = 3.14159265358979323846;
 const Vec3 kUp{0, 0, 1};
 
 ref::RefCutter refOf(CutterType type, double R, double r, double L) {

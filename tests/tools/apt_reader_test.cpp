@@ -1,6 +1,6 @@
-// APT / CL data reader (tools/apt_reader.h): statements, continuation lines, cutters,
+// APT / CL data reader (tools/io/apt_reader.h): statements, continuation lines, cutters,
 // units, warnings for unknown statements and errors named by line.
-#include "tools/apt_reader.h"
+#include "tools/io/apt_reader.h"
 
 #include <gtest/gtest.h>
 

@@ -123,7 +123,7 @@ BadInputRow pathRow(const std::string& name, const std::string& file, const std:
 }
 
 // Tool-path files of every format, through a job's path.file (format by extension:
-// tools/tool_path_file.h). Each reader's own tests hold its finer cases.
+// tools/io/tool_path_file.h). Each reader's own tests hold its finer cases.
 TEST_F(BadInputMatrix, ToolPathFiles) {
   const std::vector<BadInputRow> rows = {
       pathRow("beyond 1 km", "part.txt", "0 0 -0.2\n1e300 1 -0.2\n", {"part.txt:2", "1 km"}),

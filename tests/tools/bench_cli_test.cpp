@@ -7,8 +7,8 @@
 #include <string>
 
 #include "raycast/simulation.h"
-#include "tools/bench_cases.h"
 #include "tools/cli_harness.h"
+#include "tools/run/bench_cases.h"
 
 namespace scallop {
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "tools/cli_harness.h"
-#include "tools/height_images.h"
+#include "tools/io/height_images.h"
 
 namespace fs = std::filesystem;
 

@@ -16,8 +16,8 @@
 
 #include "cli_harness.h"
 #include "raycast/zmap.h"
-#include "tools/height_images.h"
-#include "tools/x3p_writer.h"
+#include "tools/io/height_images.h"
+#include "tools/io/x3p_writer.h"
 
 namespace scallop::test {
 namespace {

@@ -1,6 +1,6 @@
-// G-code reader (tools/gcode_reader.h): motion, units, distance modes, arcs against
+// G-code reader (tools/io/gcode_reader.h): motion, units, distance modes, arcs against
 // their closed-form circles, and malformed input named by line.
-#include "tools/gcode_reader.h"
+#include "tools/io/gcode_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -104,8 +104,7 @@ TEST(GcodeReader, MalformedInputIsNamedByLine) {
   // Numbers beyond int (a fuzzer finding: the conversion was undefined behaviour).
   EXPECT_NE(error(start + "G99999999999\n").find("t.nc:3: unsupported G-word G1e+11"),
             std::string::npos);
-  EXPECT_NE(error(start + "M-99999999999\n").find("t.nc:3: unsupported M-word"),
-            std::string::npos);
+  EXPECT_NE(error(start + "M-99999999999\n").find("t.nc:3: unsupported M-word"), std::string::npos);
   EXPECT_NE(error(start + "G1 X\n").find("t.nc:3: word X has no number"), std::string::npos);
   EXPECT_NE(error(start + "G1 Xnan\n").find("t.nc:3"), std::string::npos);
   EXPECT_NE(error(start + "G1 X1e5\n").find("t.nc:3"), std::string::npos);

@@ -1,6 +1,6 @@
-// Height image writers and readers (tools/height_images.h) and atomic output
-// (tools/atomic_file.h): values, row order, metadata, file layout, failure cleanup.
-#include "tools/height_images.h"
+// Height image writers and readers (tools/io/height_images.h) and atomic output
+// (tools/io/atomic_file.h): values, row order, metadata, file layout, failure cleanup.
+#include "tools/io/height_images.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -22,7 +22,8 @@
 
 #include "raycast/zmap.h"
 #include "sweep/input_error.h"
-#include "tools/atomic_file.h"
+#include "tools/io/atomic_file.h"
+#include "tools/render/preview_png.h"
 
 namespace scallop {
 namespace {

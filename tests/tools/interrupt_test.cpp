@@ -1,9 +1,9 @@
 // Ctrl-C (SIGINT) during a long `scallop simulate`: the run stops within 2 s with exit
 // status 130 and "scallop: interrupted", and the output folder holds no height image,
-// report or temporary file (tools/interrupt.h), both for the in-memory and the banded
+// report or temporary file (tools/cli/interrupt.h), both for the in-memory and the banded
 // (--tiled, streamed writers) paths. Also the in-process mechanism: an Interrupted
 // thrown by the progress callback leaves the parallel tile loop as an exception.
-#include "tools/interrupt.h"
+#include "tools/cli/interrupt.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -16,7 +16,7 @@
 
 #include "raycast/cell_tiles.h"
 #include "tests/tools/cli_harness.h"
-#include "tools/progress.h"
+#include "tools/cli/progress.h"
 
 namespace scallop::test {
 namespace {

@@ -1,5 +1,5 @@
 // The mount_rush check (issue 6, item 3): OpenCAMLib's drop-cutter paths over a real
-// STL relief (shared/data/mount_rush, README there), simulated exactly and compared
+// STL relief (tests/data/mount_rush, README there), simulated exactly and compared
 // with the design's upper envelope. Every gouge the simulation finds must be chordal:
 // the linear move between two contact points dips below the height at which the
 // cutter would touch the mesh. For each move that makes a gouge cell, an independent
@@ -19,13 +19,13 @@
 #include "analysis/drop_cutter.h"
 #include "analysis/gouge_check.h"
 #include "raycast/simulation.h"
-#include "tools/stl_io.h"
-#include "tools/tool_path_file.h"
+#include "tools/io/stl_io.h"
+#include "tools/io/tool_path_file.h"
 
 namespace scallop {
 namespace {
 
-const std::string kDir = std::string(SCALLOP_SEEDS_DIR) + "/../data/mount_rush/";
+const std::string kDir = std::string(SCALLOP_SOURCE_DIR) + "/tests/data/mount_rush/";
 
 // Largest chord dip (drop-cutter height minus chord height) along a move: 21 samples,
 // then golden-section search around the best one. Returns the dip and its contact.

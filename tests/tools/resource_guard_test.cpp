@@ -12,8 +12,8 @@
 
 #include "sweep/input_error.h"
 #include "tests/tools/cli_harness.h"
-#include "tools/job.h"
-#include "tools/tool_path_file.h"
+#include "tools/io/job.h"
+#include "tools/io/tool_path_file.h"
 
 namespace scallop {
 namespace {

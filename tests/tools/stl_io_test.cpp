@@ -1,6 +1,6 @@
-// STL reading (tools/stl_io.h): both encodings told apart by content, welding, and a
+// STL reading (tools/io/stl_io.h): both encodings told apart by content, welding, and a
 // clear error naming the file and triangle or line for every kind of broken file.
-#include "tools/stl_io.h"
+#include "tools/io/stl_io.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// Maps computed in bands (tools/tiled_simulation.h): the same heights, bit for bit, as
+// Maps computed in bands (tools/run/tiled_simulation.h): the same heights, bit for bit, as
 // the in-memory path, written as tiled OpenEXR and streamed GSF, and band ranges run
 // by separate processes that `scallop merge` assembles into the same files.
 #include <OpenImageIO/imageio.h>
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "tools/cli_harness.h"
-#include "tools/height_images.h"
-#include "tools/tiled_simulation.h"
+#include "tools/io/height_images.h"
+#include "tools/run/tiled_simulation.h"
 
 namespace fs = std::filesystem;
 

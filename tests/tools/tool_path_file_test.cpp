@@ -1,4 +1,4 @@
-// Tool-path files in jobs and on the command line (tools/tool_path_file.h): the same
+// Tool-path files in jobs and on the command line (tools/io/tool_path_file.h): the same
 // raster as a job and as G-code or 5-axis APT gives bit-identical heights; rapids into
 // the stock are warned about with their line; CUTTER/ defines a missing tool;
 // malformed files exit 1 with file:line and leave no output; a design surface adds
@@ -11,8 +11,8 @@
 #include "raycast/simulation.h"
 #include "sweep/raster.h"
 #include "tools/cli_harness.h"
-#include "tools/job.h"
-#include "tools/stl_io.h"
+#include "tools/io/job.h"
+#include "tools/io/stl_io.h"
 
 namespace scallop {
 namespace {

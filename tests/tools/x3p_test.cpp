@@ -1,4 +1,4 @@
-// X3P export (tools/x3p_writer.h) read back with `unzip` and `md5sum`, not with our
+// X3P export (tools/io/x3p_writer.h) read back with `unzip` and `md5sum`, not with our
 // own code: the archive's members, main.xml's ISO 5436-2 structure and numbers, the
 // data's size and values, and both MD5 checksums. MD5 itself against RFC 1321's
 // test suite (appendix A.5).
@@ -12,8 +12,8 @@
 #include "cli_harness.h"
 #include "raycast/zmap.h"
 #include "sweep/input_error.h"
-#include "tools/md5.h"
-#include "tools/x3p_writer.h"
+#include "tools/io/md5.h"
+#include "tools/io/x3p_writer.h"
 
 namespace scallop::test {
 namespace {

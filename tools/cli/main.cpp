@@ -1,0 +1,78 @@
+// scallop: command-line entry point. Parses the command line, sets the thread count,
+// and maps errors to the exit statuses of CONVENTIONS.md:
+//   0 success, 1 bad input, 2 usage error, 3 internal error; 130 after Ctrl-C
+// (tools/cli/interrupt.h).
+#include <tbb/global_control.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "sweep/input_error.h"
+#include "tools/cli/command.h"
+#include "tools/cli/interrupt.h"
+
+namespace {
+
+constexpr const char* kDescription =
+    "scallop: exact machined-surface topography of milling tool paths.\n"
+    "Sweeps ball, flat and bull (torus) cutters along linear moves, with any tool axis,\n"
+    "and computes on a z-map grid the exact lowest point of the swept solids (double\n"
+    "precision, 1e-6 mm). Lengths in mm, angles in degrees. Exit status: 0 success,\n"
+    "1 bad input, 2 usage error, 3 internal error, 130 interrupted (Ctrl-C; no partial\n"
+    "outputs are left). `scallop COMMAND --help` for more.";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  scallop::installInterruptHandler();  // Ctrl-C in a long loop then ends cleanly
+  CLI::App app{kDescription, "scallop"};
+  app.require_subcommand(1);
+  scallop::CommonOptions common;
+
+  // Every subcommand, in the order --help lists them.
+  std::vector<scallop::Command> commands;
+  commands.push_back(scallop::addSimulateCommand(app, common));
+  commands.push_back(scallop::addSurfaceCommand(app, common));
+  commands.push_back(scallop::addGougeCommand(app, common));
+  commands.push_back(scallop::addIntervalCommand(app, common));
+  commands.push_back(scallop::addValidateCommand(app, common));
+  commands.push_back(scallop::addBenchCommand(app, common));
+  commands.push_back(scallop::addMergeCommand(app, common));
+  commands.push_back(scallop::addStatsCommand(app, common));
+  commands.push_back(scallop::addExportCommand(app, common));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;  // --help exits 0; every usage error is 2
+  }
+
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (common.threads > 0)
+    threadLimit = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, size_t(common.threads));
+
+  try {
+    for (const scallop::Command& command : commands)
+      if (command.app->parsed()) return command.run();
+  } catch (const scallop::Interrupted&) {
+    // Thrown from a progress callback; unwinding removed every temporary output.
+    std::fprintf(stderr, "scallop: interrupted\n");
+    return 130;
+  } catch (const scallop::InputError& e) {
+    std::fprintf(stderr, "scallop: error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "scallop: internal error: out of memory\n");
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "scallop: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

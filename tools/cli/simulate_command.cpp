@@ -1,0 +1,141 @@
+#include "tools/cli/simulate_command.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "sweep/input_error.h"
+#include "tools/cli/command.h"
+#include "tools/cli/interrupt.h"
+#include "tools/cli/progress.h"
+#include "tools/io/job.h"
+#include "tools/run/report.h"
+
+namespace scallop {
+
+using nlohmann::json;
+
+namespace {
+
+// What `simulate` prints on stdout for people (--json prints the document instead).
+void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
+  const json& d = outcome.document;
+  if (outcome.kind == RunOutcome::Kind::kBands) {
+    std::printf("wrote bands %lld..%lld of %lld into %s; `scallop merge %s` when all exist\n",
+                d["bands"][0].get<long long>(), d["bands"][1].get<long long>() - 1,
+                d["of"].get<long long>(), outDir.c_str(), outDir.c_str());
+    return;
+  }
+  const json& g = d["grid"];
+  const json& m = d["measurements"];
+  if (outcome.kind == RunOutcome::Kind::kTiled) {
+    std::printf("heights: %lld x %lld cells in %lld bands, z in [%.6f, %.6f] mm, %.2f s\n",
+                g["nx"].get<long long>(), g["ny"].get<long long>(),
+                d["tiled"]["bands"].get<long long>(), m["min_height"].get<double>(),
+                m["max_height"].get<double>(), d["timings_s"]["total"].get<double>());
+    std::printf("wrote %s/heights.exr, heights.gsf, preview.png, report.json\n", outDir.c_str());
+    return;
+  }
+  std::printf(
+      "heights: %lld x %lld cells, z in [%.6f, %.6f] mm, %.2f exact evaluations per cell, %.2f "
+      "s\n",
+      g["nx"].get<long long>(), g["ny"].get<long long>(), m["min_height"].get<double>(),
+      m["max_height"].get<double>(), m["exact_evaluations_per_cell"].get<double>(),
+      d["timings_s"]["cast"].get<double>());
+  if (m.contains("max_scallop_height"))
+    std::printf("largest scallop between passes: %.6f mm\n", m["max_scallop_height"].get<double>());
+  namespace fs = std::filesystem;
+  const fs::path dir(outDir);
+  std::printf("wrote %s\n      %s\n      %s\n      %s\n", (dir / "heights.exr").c_str(),
+              (dir / "heights.gsf").c_str(), (dir / "preview.png").c_str(),
+              (dir / "report.json").c_str());
+}
+
+}  // namespace
+
+int runSimulate(const SimulateArgs& args) {
+  const RunSettings& run = args.run;
+  if (!args.pathFile.empty() && args.jobFile.empty())
+    throw InputError("--path",
+                     "needs a JOB file for the tool (unless the path has CUTTER/), "
+                     "stock and grid");
+  // A grid too large to hold is accepted here: the run computes it in bands.
+  const bool exact = run.method == "exact";
+  const Job job = args.jobFile.empty() ? parseJob(defaultJobJson(), "built-in default job", !exact)
+                                       : loadJobFile(args.jobFile, !exact, args.pathFile);
+  ProgressBar bar("simulating");
+  RunSettings settings = run;
+  settings.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
+  settings.computed = [&bar] {
+    bar.finish();
+    throwIfInterrupted();  // a Ctrl-C during the last tiles: write nothing
+  };
+  const RunOutcome outcome = runSimulation(job, settings);
+  if (run.quiet)
+    std::fputs(reportText(outcome.document).c_str(), stdout);
+  else
+    printOutcome(outcome, run.outDir);
+  return 0;
+}
+
+namespace {
+
+constexpr const char* kSimulateHelp =
+    "Simulate a job file and write DIR/heights.exr (float32 channel Z, mm), DIR/heights.gsf\n"
+    "(Gwyddion, metres), DIR/preview.png (shaded colour map with scale) and\n"
+    "DIR/report.json (inputs, grid, timings, measurements).\n"
+    "Without JOB, runs the built-in default job (see --print-default-job):\n"
+    "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
+    "Job file keys: tool{type,radius,corner_radius,flute_length}, stock{min,max},\n"
+    "grid{spacing}, path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,\n"
+    "segment_length} | file},\n"
+    "design{stl, gouge_tolerance (mm, default 0.001)}: adds machined - design statistics,\n"
+    "gouges with the moves (file lines) that made them, and DIR/deviation.png.\n"
+    "Path files by extension: .cl .apt .cls (APT CL data: GOTO, CUTTER, RAPID, ...),\n"
+    ".nc .ngc .gcode .tap (G-code G0-G3, G17-G21, G90/G91), .txt (x y z [i j k] lines).\n"
+    "Without \"tool\", an APT CUTTER/ statement defines the cutter.";
+
+}  // namespace
+
+Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
+  auto args = std::make_shared<SimulateArgs>();
+  auto printDefault = std::make_shared<bool>(false);
+  CLI::App* app = parent.add_subcommand("simulate", kSimulateHelp);
+  app->add_option("JOB", args->jobFile, "Job file (JSON); omit for the built-in default job");
+  app->add_option("-o,--output", args->run.outDir,
+                  "Output folder, created if missing; other files in it are left alone")
+      ->capture_default_str();
+  app->add_option("--path", args->pathFile,
+                  "Tool-path file that replaces the job's path (format from the extension;\n"
+                  "needs JOB for the stock and grid)");
+  addThreadsOption(*app, common);
+  app->add_flag("--json", args->run.quiet, "Print report.json on stdout (and nothing else there)");
+  app->add_option("--method", args->run.method,
+                  "exact: exact swept-solid heights (default); stamp: classical z-map baseline,\n"
+                  "the cutter stamped along each move at a step whose scallop is <= 1e-4 mm")
+      ->check(CLI::IsMember({"exact", "stamp"}))
+      ->capture_default_str();
+  app->add_flag("--tiled", args->run.tiled,
+                "Compute and write the map in bands of rows with bounded memory (tiled\n"
+                "OpenEXR, streamed GSF); chosen by itself when the map does not fit in memory");
+  app->add_option("--tile-rows", args->run.tileRows,
+                  "Rows per band (default: bands of <= 256 MB of heights); implies --tiled")
+      ->check(CLI::PositiveNumber);
+  app->add_option("--bands", args->run.bands,
+                  "K:M: compute only bands K..M-1 and write DIR/band-K.raw (float64 mm) and\n"
+                  "DIR/band-K.json; `scallop merge DIR` assembles the outputs when all exist");
+  app->add_flag("--print-default-job", *printDefault,
+                "Print the built-in default job file and exit");
+  return {app, [args, printDefault, &common]() {
+            if (*printDefault) {
+              std::puts(defaultJobJson());
+              return 0;
+            }
+            args->run.threads = common.threads;
+            return runSimulate(*args);
+          }};
+}
+
+}  // namespace scallop

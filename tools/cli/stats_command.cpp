@@ -1,0 +1,143 @@
+#include "tools/cli/stats_command.h"
+
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/profile_metrology.h"
+#include "sweep/input_error.h"
+#include "tools/cli/command.h"
+#include "tools/io/height_export.h"
+#include "tools/run/report.h"
+
+namespace scallop {
+
+using nlohmann::json;
+
+namespace {
+
+struct StatsArgs {
+  std::string file;
+  std::vector<double> region, profile;
+  std::string level = "plane";
+  double cutoffMm = 0.8, stepMm = 0;
+  bool json = false;
+};
+
+json roughnessJson(const Profile& p, const RoughnessStats& r) {
+  return {{"line_mm", {p.x0, p.y0, p.x1, p.y1}},
+          {"step_mm", p.stepMm},
+          {"samples", p.height.size()},
+          {"cutoff_mm", r.cutoffMm},
+          {"sampling_lengths", r.samplingLengths},
+          {"evaluation_start_mm", r.evaluationStartMm},
+          {"evaluation_length_mm", r.evaluationLengthMm},
+          {"Ra_mm", r.ra},
+          {"Rq_mm", r.rq},
+          {"Rz_mm", r.rz},
+          {"Rt_mm", r.rt},
+          {"convention",
+           "ISO 16610-21 Gaussian mean line (cutoff lc, kernel truncated at +-lc, run-in and "
+           "run-out of lc each), up to 5 sampling lengths of lc (ISO 4288), Rz = mean of the "
+           "sampling lengths' peak-to-valley; no lambda-s filter"}};
+}
+
+int runStats(const StatsArgs& args) {
+  const ZMap map = readHeightFile(args.file);
+  const GridSpec& g = map.grid();
+  const CellRegion region = args.region.empty()
+                                ? wholeMap(g)
+                                : regionOfRectangle(g, args.region[0], args.region[1],
+                                                    args.region[2], args.region[3], "--region");
+  const SurfaceStats s =
+      surfaceStats(map, region, args.level == "none" ? Levelling::kNone : Levelling::kPlane);
+  json doc = {
+      {"file", args.file},
+      {"grid",
+       {{"origin", {g.originX, g.originY}},
+        {"spacing", g.spacing},
+        {"nx", g.nx},
+        {"ny", g.ny},
+        {"units", "mm"}}},
+      {"region_cells", {{"i", {region.i0, region.i1}}, {"j", {region.j0, region.j1}}}},
+      {"region_mm",
+       {g.originX + double(region.i0) * g.spacing, g.originY + double(region.j0) * g.spacing,
+        g.originX + double(region.i1) * g.spacing, g.originY + double(region.j1) * g.spacing}},
+      {"surface_stats", surfaceStatsJson(s)}};
+  std::unique_ptr<Profile> profile;
+  RoughnessStats rough;
+  if (!args.profile.empty()) {
+    profile = std::make_unique<Profile>(extractProfile(map, args.profile[0], args.profile[1],
+                                                       args.profile[2], args.profile[3],
+                                                       args.stepMm, "--profile"));
+    rough = roughness(*profile, args.cutoffMm, "--cutoff");
+    doc["profile"] = roughnessJson(*profile, rough);
+  }
+  if (args.json) {
+    std::printf("%s\n", doc.dump(2).c_str());
+    return 0;
+  }
+  const auto& r = doc["region_mm"];
+  std::printf(
+      "%s: %lld x %lld cells of %g mm; region [%g, %g] x [%g, %g] mm (%lld cells), "
+      "levelling: %s\n",
+      args.file.c_str(), (long long)g.nx, (long long)g.ny, g.spacing, r[0].get<double>(),
+      r[2].get<double>(), r[1].get<double>(), r[3].get<double>(), (long long)s.cells,
+      args.level == "none" ? "none (heights from the mean)" : "least-squares plane");
+  std::printf(
+      "  Sa  = %.6g mm\n  Sq  = %.6g mm\n  Ssk = %.6g\n  Sku = %.6g  (plain kurtosis: "
+      "3 for a Gaussian surface; Gwyddion shows Sku - 3)\n  Sp  = %.6g mm\n"
+      "  Sv  = %.6g mm\n  Sz  = %.6g mm\n",
+      s.sa, s.sq, s.ssk, s.sku, s.sp, s.sv, s.sz);
+  if (profile)
+    std::printf(
+        "profile (%g, %g) -> (%g, %g) mm, cutoff %g mm, %d sampling lengths:\n"
+        "  Ra = %.6g mm\n  Rq = %.6g mm\n  Rz = %.6g mm\n  Rt = %.6g mm\n",
+        profile->x0, profile->y0, profile->x1, profile->y1, rough.cutoffMm, rough.samplingLengths,
+        rough.ra, rough.rq, rough.rz, rough.rt);
+  return 0;
+}
+
+}  // namespace
+
+Command addStatsCommand(CLI::App& parent, CommonOptions& common) {
+  auto args = std::make_shared<StatsArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "stats",
+      "ISO 25178-2 height parameters Sa, Sq, Ssk, Sku, Sp, Sv, Sz of a height map written by\n"
+      "scallop (FILE.gsf or FILE.exr), over the whole map or a --region, after least-squares\n"
+      "plane levelling (default) or none (heights from the mean). Sku is the plain kurtosis\n"
+      "(3 for a Gaussian surface; Gwyddion shows the excess, Sku - 3). With --profile, also\n"
+      "Ra, Rq, Rz, Rt of the line's roughness profile: ISO 16610-21 Gaussian filter of\n"
+      "cutoff --cutoff, up to 5 sampling lengths (ISO 4288), run-in/out of one cutoff each.\n"
+      "Cell (i, j) is one sample at its centre. Lengths in mm.");
+  app->add_option("FILE", args->file, "Height map: .gsf (Gwyddion Simple Field) or .exr")
+      ->required();
+  app->add_option("--region", args->region,
+                  "x0 y0 x1 y1: only the cells whose centres lie in this rectangle, mm")
+      ->expected(4)
+      ->allow_extra_args(false);
+  app->add_option("--level", args->level,
+                  "plane: heights from the least-squares plane; none: from the mean height")
+      ->check(CLI::IsMember({"plane", "none"}))
+      ->capture_default_str();
+  app->add_option("--profile", args->profile,
+                  "x0 y0 x1 y1: also the roughness of this line's profile, mm")
+      ->expected(4)
+      ->allow_extra_args(false);
+  app->add_option("--cutoff", args->cutoffMm,
+                  "Gaussian filter cutoff lc, mm (ISO 4288: 0.08, 0.25, 0.8, 2.5 or 8 for Ra\n"
+                  "up to 0.02, 0.1, 2, 10, 80 um)")
+      ->capture_default_str();
+  app->add_option("--step", args->stepMm, "Profile sample spacing, mm (default: grid spacing)");
+  addThreadsOption(*app, common);
+  app->add_flag("--json", args->json, "Print one JSON document on stdout (and nothing else)");
+  return {app, [args]() { return runStats(*args); }};
+}
+
+}  // namespace scallop

@@ -1,0 +1,218 @@
+#include "tools/io/apt_reader.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <istream>
+#include <vector>
+
+#include "sweep/input_error.h"
+
+namespace scallop {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  const size_t b = s.find_last_not_of(" \t\r");
+  return s.substr(a, b - a + 1);
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// One statement: its first line, major word and comma-separated arguments.
+struct Statement {
+  int64_t line = 0;
+  std::string major;
+  std::vector<std::string> args;
+  bool hasSlash = false;
+};
+
+// Reads the next statement, joining "$" continuation lines; false at the end.
+bool nextStatement(std::istream& in, const std::string& source, int64_t& lineNo, Statement& st) {
+  std::string text, line;
+  int64_t first = 0;
+  bool continued = false;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    const size_t comment = line.find("$$");
+    if (comment != std::string::npos) line.erase(comment);
+    line = trim(line);
+    if (line.empty() && !continued) continue;
+    if (!continued) first = lineNo;
+    continued = !line.empty() && line.back() == '$';
+    if (continued) line.pop_back();
+    text += line;
+    if (!continued) break;
+  }
+  if (continued)
+    throw InputError(source + ":" + std::to_string(first),
+                     "the statement continues (\"$\") past the end of the file");
+  if (first == 0) return false;
+  st = Statement();
+  st.line = first;
+  const size_t slash = text.find('/');
+  st.hasSlash = slash != std::string::npos;
+  st.major = upper(trim(text.substr(0, slash)));
+  if (st.hasSlash) {
+    const std::string rest = text.substr(slash + 1);
+    size_t start = 0;
+    while (true) {
+      const size_t comma = rest.find(',', start);
+      st.args.push_back(trim(rest.substr(start, comma - start)));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  }
+  return true;
+}
+
+bool isIdentifier(const std::string& word) {
+  if (word.empty() || !std::isalpha(static_cast<unsigned char>(word[0]))) return false;
+  for (char c : word)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
+class AptParser {
+ public:
+  AptParser(const std::string& source, ToolPathFile& out) : source_(source), out_(out) {}
+
+  void statement(const Statement& st) {
+    where_ = source_ + ":" + std::to_string(st.line);
+    if (!isIdentifier(st.major))
+      throw InputError(where_, "expected an APT statement such as GOTO/x,y,z, got \"" + st.major +
+                                   (st.hasSlash ? "/...\"" : "\""));
+    const std::string& m = st.major;
+    if (m == "GOTO" || m == "FROM") {
+      location(st, m == "FROM");
+    } else if (m == "RAPID") {
+      rapidNext_ = true;
+    } else if (m == "CUTTER") {
+      cutter(st);
+    } else if (m == "UNITS") {
+      units(st);
+    } else if (m == "MULTAX" || m == "FEDRAT" || m == "PARTNO" || m == "PPRINT" || m == "SPINDL" ||
+               m == "COOLNT" || m == "CLPRNT" || m == "FINI" || m == "END") {
+      // No effect on the swept geometry (MULTAX only announces i, j, k on GOTO).
+    } else {
+      out_.warnings.add(where_, "unknown statement \"" + m + "\" ignored");
+    }
+  }
+
+  void finish() {
+    if (!havePose_) throw InputError(source_, "no GOTO statement found");
+    if (out_.path.moves.empty()) out_.addMove(pose_, pose_, false, poseLine_);
+  }
+
+ private:
+  double number(const std::string& token, const char* what) const {
+    double v;
+    if (!parseDecimal(token, v))
+      throw InputError(
+          where_, fmt::format("{}: expected a finite decimal number, got \"{}\"", what, token));
+    return v;
+  }
+
+  void location(const Statement& st, bool from) {
+    const char* name = from ? "FROM" : "GOTO";
+    if (st.args.size() != 3 && st.args.size() != 6)
+      throw InputError(where_, fmt::format("{} expects 3 values (x,y,z) or 6 (x,y,z,i,j,k), got {}",
+                                           name, st.args.size()));
+    static const char* kNames[] = {"x", "y", "z", "i", "j", "k"};
+    double v[6];
+    for (size_t k = 0; k < st.args.size(); ++k) v[k] = number(st.args[k], kNames[k]);
+    Pose pose{{v[0] * scale_, v[1] * scale_, v[2] * scale_},
+              havePose_ ? pose_.axis : Vec3{0, 0, 1}};
+    if (st.args.size() == 6) {
+      pose.axis = fileAxis({v[3], v[4], v[5]}, where_);
+    }
+    if (havePose_ && !from) {
+      out_.addMove(pose_, pose, rapidNext_, st.line);
+      if (firstMoveLine_ == 0) firstMoveLine_ = st.line;
+    }
+    if (!from) rapidNext_ = false;
+    pose_ = pose;
+    poseLine_ = st.line;
+    havePose_ = true;
+  }
+
+  void cutter(const Statement& st) {
+    const size_t n = st.args.size();
+    if (n != 1 && n != 2 && n != 7)
+      throw InputError(where_,
+                       fmt::format("CUTTER expects d, d,r or d,r,e,f,a,b,h; got {} values", n));
+    std::vector<double> v;
+    for (size_t k = 0; k < n; ++k) v.push_back(number(st.args[k], "CUTTER value") * scale_);
+    const double radius = v[0] / 2, corner = n >= 2 ? v[1] : 0;
+    double flute = 0;
+    if (n == 7) {
+      // APT's generalized cutter: a torus end mill has e = d/2 - r, f = r, a = b = 0.
+      const double tol = 1e-9 * std::max(1.0, radius);
+      if (std::fabs(v[2] - (radius - corner)) > tol || std::fabs(v[3] - corner) > tol ||
+          v[4] != 0 || v[5] != 0)
+        throw InputError(where_,
+                         "only end mills are supported: CUTTER/d,r,e,f,a,b,h needs e = d/2 - r, "
+                         "f = r, a = b = 0");
+      flute = v[6];
+      if (!(flute > 0)) throw InputError(where_, "CUTTER height h must be > 0 mm");
+    }
+    if (!(radius > 0)) throw InputError(where_, "CUTTER diameter must be > 0 mm");
+    if (corner < 0 || corner > radius)
+      throw InputError(where_, fmt::format("CUTTER corner radius must be in [0, d/2 = {:g}] mm, "
+                                           "got {:g}",
+                                           radius, corner));
+    const CutterType type = corner == 0        ? CutterType::Flat
+                            : corner == radius ? CutterType::Ball
+                                               : CutterType::Bull;
+    const Cutter c = Cutter::make(type, radius, corner, flute, where_ + ": CUTTER");
+    if (out_.cutter) {
+      const Cutter& o = *out_.cutter;
+      if (o.type != c.type || o.radius != c.radius || o.cornerRadius != c.cornerRadius ||
+          o.fluteLength != c.fluteLength)
+        throw InputError(where_, "a second, different CUTTER: one tool per path file");
+      return;
+    }
+    out_.cutter = c;
+  }
+
+  void units(const Statement& st) {
+    const std::string u = st.args.size() == 1 ? upper(st.args[0]) : "";
+    double scale = 0;
+    if (u == "MM") scale = 1;
+    if (u == "INCHES" || u == "INCH") scale = 25.4;
+    if (scale == 0) throw InputError(where_, "expected UNITS/MM or UNITS/INCHES");
+    if (scale != scale_ && firstMoveLine_ != 0)
+      throw InputError(where_, fmt::format("mixed units: UNITS/{} after moves in {} since line {}; "
+                                           "a file must use one unit",
+                                           u, scale_ == 1 ? "mm" : "inches", firstMoveLine_));
+    scale_ = scale;
+  }
+
+  const std::string& source_;
+  ToolPathFile& out_;
+  std::string where_;
+  double scale_ = 1;  // mm per file unit
+  bool rapidNext_ = false;
+  bool havePose_ = false;
+  Pose pose_;
+  int64_t poseLine_ = 0, firstMoveLine_ = 0;
+};
+
+}  // namespace
+
+void readApt(std::istream& in, const std::string& source, ToolPathFile& out) {
+  out.format = "apt";
+  AptParser parser(source, out);
+  Statement st;
+  int64_t lineNo = 0;
+  while (nextStatement(in, source, lineNo, st)) parser.statement(st);
+  parser.finish();
+}
+
+}  // namespace scallop

@@ -1,0 +1,81 @@
+// Reading by extension, 16-bit PNG/TIFF and CSV profile export (height_export.h).
+#include "tools/io/height_export.h"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "sweep/input_error.h"
+#include "tools/io/atomic_file.h"
+#include "tools/io/file_names.h"
+#include "tools/io/height_images.h"
+
+namespace scallop {
+
+ZMap readHeightFile(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (!std::filesystem::exists(path)) throw InputError(path, "no such file");
+  if (ext == ".gsf") return readHeightsGsf(path);
+  if (ext == ".exr") return readHeightsExr(path);
+  throw InputError(path,
+                   "expected a height map written by scallop: a Gwyddion Simple Field "
+                   "(.gsf) or an OpenEXR (.exr) file");
+}
+
+void writeHeights16(const ZMap& map, const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  const char* format = ext == ".png" ? "png" : (ext == ".tif" || ext == ".tiff") ? "tiff" : nullptr;
+  if (!format) throw InputError(path, "expected a .png, .tif or .tiff file name");
+  const GridSpec& g = map.grid();
+  if (g.nx <= 0 || g.ny <= 0 || g.nx > INT32_MAX || g.ny > INT32_MAX)
+    throw InputError(path, "the height map is empty or too large for an image");
+  const double zMin = map.minHeight(), zMax = map.maxHeight();
+  // A flat map still gets a positive scale so that offset + scale * v stays valid.
+  const double scale = zMax > zMin ? (zMax - zMin) / 65535.0 : 1e-6;
+  std::vector<uint16_t> pixels(size_t(g.cells()));
+  for (int64_t row = 0; row < g.ny; ++row)
+    for (int64_t i = 0; i < g.nx; ++i) {
+      const double v = std::round((map.at(i, g.ny - 1 - row) - zMin) / scale);
+      pixels[size_t(row * g.nx + i)] = uint16_t(std::clamp(v, 0.0, 65535.0));
+    }
+  OIIO::ImageSpec spec(int(g.nx), int(g.ny), 1, OIIO::TypeDesc::UINT16);
+  spec.channelnames = {"Z"};
+  spec.attribute(
+      "ImageDescription",
+      fmt::format("scallop height map: z_mm = z_offset_mm + z_scale_mm * value; "
+                  "z_offset_mm = {}; z_scale_mm = {}; {} x {} cells of {} mm, "
+                  "first cell centre at ({}, {}) mm; row 0 is the largest y",
+                  zMin, scale, g.nx, g.ny, g.spacing, g.cellCentreX(0), g.cellCentreY(g.ny - 1)));
+  spec.attribute("scallop:z_offset_mm", fmt::format("{}", zMin));
+  spec.attribute("scallop:z_scale_mm", fmt::format("{}", scale));
+  spec.attribute("scallop:origin_x", fmt::format("{}", g.originX));
+  spec.attribute("scallop:origin_y", fmt::format("{}", g.originY));
+  spec.attribute("scallop:spacing_mm", fmt::format("{}", g.spacing));
+  spec.attribute("Software", "scallop 0.1.0");
+  writeFileAtomically(path, [&](const std::string& temp) {
+    auto out = OIIO::ImageOutput::create(format);
+    if (!out) throw InputError(path, std::string("image writer unavailable: ") + OIIO::geterror());
+    if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::UINT16, pixels.data()) ||
+        !out->close())
+      throw InputError(path, "cannot write the image: " + out->geterror());
+  });
+}
+
+void writeProfileCsv(const Profile& p, const RoughnessStats* r, const std::string& path) {
+  std::string text = "distance_mm,x_mm,y_mm,z_mm,roughness_mm\n";
+  for (size_t k = 0; k < p.height.size(); ++k) {
+    text += fmt::format("{},{},{},{},", double(k) * p.stepMm, p.xAt(int64_t(k)), p.yAt(int64_t(k)),
+                        p.height[k]);
+    if (r && std::isfinite(r->roughness[k])) text += fmt::format("{}", r->roughness[k]);
+    text += "\n";
+  }
+  writeTextAtomically(path, text, "the profile");
+}
+
+}  // namespace scallop

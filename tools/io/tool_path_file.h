@@ -1,0 +1,87 @@
+// Tool-path files: the cutter locations a CAM system writes, read by format.
+//
+// The format comes from the file name's extension:
+//   .cl .apt .cls        APT / CL data (tools/io/apt_reader.h); a .cl file whose first
+//                        statement starts with a number is plain CL text instead
+//   .nc .ngc .gcode .tap G-code, 3-axis subset (tools/io/gcode_reader.h)
+//   .txt                 plain CL text, below
+//
+// Plain CL text, one cutter location per line:
+//   # comment lines start with '#'
+//   x y z            tip position, axis +Z (3-axis), mm
+//   x y z i j k      tip position and tool axis (normalised on reading)
+//   (blank line)     ends a pass: the move to the next location is a rapid
+// Consecutive locations are joined by linear cutting moves. This is the format of
+// OpenCAMLib-style drop-cutter output (e.g. shared/data/mount_rush/*.cl.txt).
+//
+// Files are read line by line: only the moves themselves are held, never the text.
+// Every reader throws InputError naming "file:line" and what was expected.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sweep/cutter.h"
+#include "sweep/pose.h"
+#include "sweep/vec3.h"
+
+namespace scallop {
+
+// Warnings of one path file: the first kMaxKept are kept ("file:line: what"), all
+// are counted, so a file with a million unknown statements stays readable.
+struct PathWarnings {
+  static constexpr size_t kMaxKept = 100;
+  std::vector<std::string> kept;
+  size_t total = 0;
+  void add(const std::string& where, const std::string& what);
+};
+
+struct PathFileOptions {
+  // Arcs (G2/G3) become chords whose distance from the true arc is at most this, mm.
+  double arcTolerance = 1e-4;
+};
+
+struct ToolPathFile {
+  std::string format;  // "cl-text", "apt" or "gcode"
+  ToolPath path;
+  // moveLines[k]: 1-based line of the file that made path.moves[k] (for an APT
+  // statement with continuation lines, its first line).
+  std::vector<int64_t> moveLines;
+  PathWarnings warnings;
+  std::optional<Cutter> cutter;  // APT CUTTER/ statement, when present
+  double arcTolerance = 0;       // mm, for G-code arcs (0 when the format has none)
+
+  // Appends a move from the current location (the last move's end).
+  void addMove(const Pose& from, const Pose& to, bool rapid, int64_t line);
+};
+
+// Reads `path` in the format of its extension. Throws InputError("file:line", ...).
+ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& options = {});
+
+// The plain CL text reader on a stream or a string (`source` names it in messages).
+void readClText(std::istream& in, const std::string& source, ToolPathFile& out);
+ToolPath parseToolPath(const std::string& text, const std::string& source);
+
+// Adds a warning for every rapid move whose cutter goes below the stock top inside
+// the stock's xy box, a crash on the machine. Conservative: the cutter's lowest point
+// along the move (exact for a fixed axis, the lower of both ends' for a turning one)
+// below stock.max.z while the tip's path there comes within the cutter's horizontal
+// reach (R, plus flute length x sin(tilt) for a tilted axis) of the box. Retracts
+// straight up the tool axis are not flagged (they leave by the way the cutter is).
+void warnRapidsIntoStock(ToolPathFile& file, const Cutter& cutter, const Box3& stock,
+                         const std::string& source);
+
+// A tool axis read from a file: a vector already unit to round-off (as CAM systems
+// print them, 17 digits round-trip) is kept bit for bit, so the sweep's own
+// normalisation treats it exactly like a generated axis; others are normalised.
+// Throws InputError(where) for a zero or non-finite axis.
+Vec3 fileAxis(const Vec3& axis, const std::string& where);
+
+// Parses a number the way every reader does: decimal only (no hex, inf or nan),
+// the whole token consumed. Returns false otherwise.
+bool parseDecimal(const std::string& token, double& value);
+
+}  // namespace scallop

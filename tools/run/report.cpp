@@ -1,0 +1,141 @@
+#include "tools/run/report.h"
+
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "tools/io/atomic_file.h"
+#include "tools/io/job.h"
+#include "tools/io/version.h"
+
+namespace scallop {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kSkuNote =
+    "Sku is the plain kurtosis (3 for a Gaussian surface); Gwyddion shows the excess, Sku - 3";
+
+json number(double v) {
+  return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+}  // namespace
+
+json newReport(int requestedThreads) {
+  json r;
+  r["scallop_version"] = kScallopVersion;
+  r["threads"] = requestedThreads > 0 ? requestedThreads : tbb::info::default_concurrency();
+  return r;
+}
+
+std::string reportText(const json& report) {
+  return report.dump(2) + "\n";
+}
+
+std::string writeReport(const json& report, const std::string& dir) {
+  const std::string text = reportText(report);
+  writeTextAtomically((std::filesystem::path(dir) / "report.json").string(), text, "the report");
+  return text;
+}
+
+json simulationReport(const RunRecord& run) {
+  json r = newReport(run.requestedThreads);
+  r["job_source"] = run.jobSource;
+  r["inputs"] = run.inputs;
+  r["grid"] = gridToJson(run.grid);
+  r["method"] = run.method;
+  if (run.method == "stamp") r["stamp_step_mm"] = run.stampStepMm;
+  r["sweep"] = {{"cutting_moves", run.cuttingMoves},
+                {"swept_segments", run.sweptSegments},
+                {"culling_tiles", run.cullingTiles}};
+  r["timings_s"] = {{"scene_build", run.sceneSeconds},
+                    {"cast", run.castSeconds},
+                    {"write", run.writeSeconds},
+                    {"total", run.totalSeconds}};
+  const double cells = double(run.grid.cells());
+  json meas = {{"min_height", run.minHeight},
+               {"max_height", run.maxHeight},
+               {"exact_evaluations_per_cell", cells > 0 ? run.exactEvaluations / cells : 0.0},
+               {"mcells_per_s", run.castSeconds > 0 ? cells / run.castSeconds / 1e6 : 0.0}};
+  if (!run.raster.is_null()) meas.update(run.raster);
+  r["measurements"] = meas;
+  r["surface_stats"] = run.surfaceStats;
+  r["outputs"] = {"heights.exr", "heights.gsf", "preview.png", "report.json"};
+  if (!run.tiled.is_null()) r["tiled"] = run.tiled;
+  if (!run.pathFile.is_null()) r["path_file"] = run.pathFile;
+  if (!run.design.is_null()) r["design"] = run.design, r["outputs"].push_back("deviation.png");
+  return r;
+}
+
+json gridToJson(const GridSpec& g) {
+  return {{"origin", {g.originX, g.originY}},
+          {"spacing", g.spacing},
+          {"nx", g.nx},
+          {"ny", g.ny},
+          {"cell_centre", "origin + (index + 1/2) * spacing"},
+          {"units", "mm"}};
+}
+
+GridSpec gridFromJson(const json& j) {
+  GridSpec g;
+  g.originX = j.at("origin").at(0).get<double>();
+  g.originY = j.at("origin").at(1).get<double>();
+  g.spacing = j.at("spacing").get<double>();
+  g.nx = j.at("nx").get<int64_t>();
+  g.ny = j.at("ny").get<int64_t>();
+  return g;
+}
+
+// The highest point left above the floor between the first and the last pass (where
+// both neighbours have cut), i.e. the largest scallop on the map, mm.
+json rasterMeasurements(const Job& job, const ZMap& map) {
+  json m;
+  const double floorZ = job.stock.max.z - job.raster.depth;
+  m["floor_z"] = floorZ;
+  const bool alongX = job.raster.direction == 'x';
+  const double crossMin = alongX ? job.stock.min.y : job.stock.min.x;
+  const double crossMax = alongX ? job.stock.max.y : job.stock.max.x;
+  const int passes = int(std::floor((crossMax - crossMin) / job.raster.stepOver + 1e-9)) + 1;
+  if (passes < 2) return m;
+  const double lastPass = crossMin + (passes - 1) * job.raster.stepOver;
+  double top = -HUGE_VAL;
+  const GridSpec& g = map.grid();
+  for (int64_t j = 0; j < g.ny; ++j) {
+    for (int64_t i = 0; i < g.nx; ++i) {
+      const double c = alongX ? g.cellCentreY(j) : g.cellCentreX(i);
+      if (c >= crossMin && c <= lastPass) top = std::max(top, map.at(i, j));
+    }
+  }
+  m["max_scallop_height"] = top - floorZ;
+  return m;
+}
+
+json surfaceStatsJson(const SurfaceStats& s) {
+  return {{"standard", "ISO 25178-2"},
+          {"levelling", s.levelling == Levelling::kPlane ? "least-squares plane" : "none"},
+          {"cells", s.cells},
+          {"area_mm2", s.areaMm2},
+          {"Sa_mm", number(s.sa)},
+          {"Sq_mm", number(s.sq)},
+          {"Ssk", number(s.ssk)},
+          {"Sku", number(s.sku)},
+          {"Sp_mm", number(s.sp)},
+          {"Sv_mm", number(s.sv)},
+          {"Sz_mm", number(s.sz)},
+          {"reference_plane",
+           {{"centre_mm", {s.plane.x0, s.plane.y0}},
+            {"z_at_centre_mm", s.plane.z0},
+            {"slope_x", s.plane.slopeX},
+            {"slope_y", s.plane.slopeY}}},
+          {"notes", kSkuNote}};
+}
+
+json mapSurfaceStatsJson(const ZMap& map) {
+  return surfaceStatsJson(surfaceStats(map, wholeMap(map.grid()), Levelling::kPlane));
+}
+
+}  // namespace scallop

@@ -1,0 +1,67 @@
+// report.json: the one builder of what every run reports. `simulate` (in memory and in
+// bands), `merge`, `gouge` and `bench` all start their document with newReport() and
+// write it with writeReport(); a simulation's whole report comes from
+// simulationReport(), so the in-memory and the tiled runs cannot drift apart.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "analysis/surface_metrology.h"
+#include "raycast/zmap.h"
+
+namespace scallop {
+
+struct Job;
+
+// {"scallop_version", "threads"}: `requestedThreads` is --threads (0: all cores).
+nlohmann::json newReport(int requestedThreads);
+
+// The report as printed and stored: indented by 2, with a final newline.
+std::string reportText(const nlohmann::json& report);
+
+// Writes DIR/report.json atomically and returns its text (what --json prints).
+std::string writeReport(const nlohmann::json& report, const std::string& dir);
+
+// What one simulation run measured; the report's sections are built from it.
+struct RunRecord {
+  // The run: the job echoed (jobToJson), its grid and how it was swept.
+  std::string jobSource;
+  nlohmann::json inputs;
+  GridSpec grid;
+  std::string method = "exact";  // or "stamp", with its step
+  double stampStepMm = 0;
+  int64_t cuttingMoves = 0, sweptSegments = 0, cullingTiles = 0;
+  int requestedThreads = 0;
+  // Timings, s.
+  double sceneSeconds = 0, castSeconds = 0, writeSeconds = 0, totalSeconds = 0;
+  // The heights.
+  double minHeight = 0, maxHeight = 0, exactEvaluations = 0;
+  nlohmann::json raster;        // rasterMeasurements() for a raster job, else null
+  nlohmann::json surfaceStats;  // surfaceStatsJson()
+  // Optional sections, left out when null.
+  nlohmann::json pathFile;  // pathFileReport() for a job with a path file
+  nlohmann::json design;    // designReport(), which also wrote deviation.png
+  nlohmann::json tiled;     // {"bands", "band_rows", "exr_tile_rows"} of a banded run
+};
+
+nlohmann::json simulationReport(const RunRecord& run);
+
+// The grid block: {"origin", "spacing", "nx", "ny", "cell_centre", "units"}.
+nlohmann::json gridToJson(const GridSpec& g);
+GridSpec gridFromJson(const nlohmann::json& j);
+
+// For a raster: floor_z and the largest scallop between the first and the last pass
+// on `map`; a band of a map gives its own share.
+nlohmann::json rasterMeasurements(const Job& job, const ZMap& map);
+
+// The "surface_stats" block: {"standard", "levelling", "cells", "area_mm2", "Sa_mm",
+// "Sq_mm", "Ssk", "Sku", "Sp_mm", "Sv_mm", "Sz_mm", "reference_plane": {...},
+// "notes"}. NaN parameters (Sa of a banded map) become null.
+nlohmann::json surfaceStatsJson(const SurfaceStats& stats);
+
+// The in-memory report's block: the whole map, plane levelled.
+nlohmann::json mapSurfaceStatsJson(const ZMap& map);
+
+}  // namespace scallop

@@ -1,0 +1,283 @@
+// Tiled simulation (tiled_simulation.h) and the band files of `simulate --bands`.
+//
+// Band file DIR/band-K.raw: the band's heights, mm, as native little-endian float64 in
+// ZMap order (row j = 0 is the band's smallest y), nx values a row. DIR/band-K.json is
+// written after it (both atomically), so a .json always names a complete .raw:
+//   {"format": "scallop band 1", "run": {...}, "band": K, "stats": {...}}
+// "run" is identical in every band of one run (job echo, grid, layout, scene stats);
+// merge refuses bands whose "run" differs.
+#include "tools/run/tiled_simulation.h"
+
+#include <fmt/core.h>
+#include <sys/statvfs.h>
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "raycast/simulation.h"
+#include "sweep/input_error.h"
+#include "tools/io/atomic_file.h"
+#include "tools/io/job.h"
+#include "tools/render/preview_png.h"
+#include "tools/run/path_report.h"
+#include "tools/run/report.h"
+#include "tools/run/stopwatch.h"
+
+namespace scallop {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kBandBytes = 256.0 * (1 << 20);
+constexpr int64_t kMaxTileRows = 256;
+constexpr double kGiB = double(1ull << 30);
+
+// Bands [first, end) from "K:M".
+std::pair<int64_t, int64_t> parseBands(const std::string& text, const BandLayout& layout) {
+  long long k = -1, m = -1;
+  char tail = 0;
+  const std::string expected =
+      fmt::format("expected K:M with 0 <= K < M <= {} (this job has {} bands of {} rows)",
+                  layout.bands, layout.bands, layout.bandRows);
+  if (std::sscanf(text.c_str(), "%lld:%lld%c", &k, &m, &tail) != 2 || k < 0 || m <= k ||
+      m > layout.bands)
+    throw InputError("--bands", "'" + text + "': " + expected);
+  return {k, m};
+}
+
+void writeBandFiles(const std::string& dir, int64_t band, const ZMap& map, const json& run,
+                    const json& stats) {
+  const std::string raw = (fs::path(dir) / fmt::format("band-{}.raw", band)).string();
+  writeStreamAtomically(raw, "the band", [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(map.heights().data()),
+              std::streamsize(map.heights().size() * sizeof(double)));
+  });
+  const std::string side = (fs::path(dir) / fmt::format("band-{}.json", band)).string();
+  const json doc = {{"format", "scallop band 1"}, {"run", run}, {"band", band}, {"stats", stats}};
+  writeTextAtomically(side, doc.dump(1) + "\n", "the band description");
+}
+
+}  // namespace
+
+BandLayout bandLayout(const GridSpec& grid, int64_t requestedRows) {
+  int64_t rows = requestedRows > 0
+                     ? requestedRows
+                     : std::max<int64_t>(1, int64_t(kBandBytes / (8.0 * double(grid.nx))));
+  BandLayout layout;
+  layout.tileHeight = int(std::min(kMaxTileRows, rows));
+  rows = rows / layout.tileHeight * layout.tileHeight;
+  layout.bandRows = std::min(rows, std::max<int64_t>(1, grid.ny));
+  layout.bands = (grid.ny + layout.bandRows - 1) / layout.bandRows;
+  return layout;
+}
+
+bool gridFitsMemory(const Job& job, const std::string& outDir) {
+  const GridSpec grid = job.grid();
+  try {
+    checkGridFitsMemory(grid, job.source + ": grid.spacing");
+    return true;
+  } catch (const InputError& refusal) {
+    // heights.gsf takes 4 bytes a cell; zip-compressed float32 EXR at most about as much.
+    const double need = 8.0 * double(grid.nx) * double(grid.ny);
+    struct statvfs fsInfo {};
+    const double free = ::statvfs(outDir.c_str(), &fsInfo) == 0
+                            ? double(fsInfo.f_bavail) * double(fsInfo.f_frsize)
+                            : 0.0;
+    const bool imageSized = grid.nx <= INT32_MAX && grid.ny <= INT32_MAX;
+    if (need > free || !imageSized) {
+      throw InputError(refusal.where(),
+                       fmt::format("{}; in bands it would need {:.3g} GiB of disk in {}, where "
+                                   "{:.3g} GiB are free{}",
+                                   refusal.reason(), need / kGiB, outDir, free / kGiB,
+                                   imageSized ? "" : ", and more rows or columns than an image"));
+    }
+    const BandLayout layout = bandLayout(grid, 0);
+    std::fprintf(stderr,
+                 "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "
+                 "bands of %lld rows (--tiled)\n",
+                 (long long)grid.nx, (long long)grid.ny, (long long)layout.bands,
+                 (long long)layout.bandRows);
+    return false;
+  }
+}
+
+RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
+  const auto tStart = Clock::now();
+  const GridSpec grid = job.grid();
+  const BandLayout layout = bandLayout(grid, settings.tileRows);
+  const bool partial = !settings.bands.empty();
+  const auto [first, end] =
+      partial ? parseBands(settings.bands, layout) : std::pair<int64_t, int64_t>{0, layout.bands};
+  if (!settings.quiet)
+    std::fprintf(stderr,
+                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm, "
+                 "bands %lld..%lld of %lld (%lld rows each)\n",
+                 job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
+                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing,
+                 (long long)first, (long long)end - 1, (long long)layout.bands,
+                 (long long)layout.bandRows);
+
+  SimulationOptions options;
+  const std::unique_ptr<SweptScene> scene =
+      buildScene(job.cutter, job.path, job.stock, grid.spacing, options);
+  const SceneStats sceneStats = scene->stats();
+
+  // Everything a band file must agree on with the other bands of its run.
+  const json run = {{"job_source", job.source},
+                    {"inputs", jobToJson(job)},
+                    {"title", simulationTitle(job)},
+                    {"grid", gridToJson(grid)},
+                    {"band_rows", layout.bandRows},
+                    {"bands", layout.bands},
+                    {"exr_tile_rows", layout.tileHeight},
+                    {"cutting_moves", job.path.cuttingMoves()},
+                    {"swept_segments", sceneStats.segments},
+                    {"culling_tiles", sceneStats.tiles}};
+  std::unique_ptr<TiledOutput> output;
+  if (!partial) {
+    output = std::make_unique<TiledOutput>(run, settings.outDir);
+    if (!job.isRaster) output->setPathFile(pathFileReport(job, settings.quiet));
+  }
+
+  int64_t totalCells = 0, doneCells = 0;
+  for (int64_t b = first; b < end; ++b) totalCells += layout.bandGrid(b, grid).cells();
+  options.cast.progress = [&](int64_t done, int64_t) {
+    if (settings.progress) settings.progress(doneCells + done, totalCells);
+  };
+  std::vector<std::string> written;
+  const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+  for (int64_t b = first; b < end; ++b) {
+    ZMap band(layout.bandGrid(b, grid), job.stock.max.z);
+    const CastStats cast = castZMap(*scene, band, options.cast);
+    doneCells += band.grid().cells();
+    json stats = {{"rows", {layout.firstRow(b), layout.endRow(b, grid)}},
+                  {"cells", cast.cells},
+                  {"exact_evaluations", cast.exactEvaluations},
+                  {"cast_seconds", cast.seconds},
+                  {"scene_build_seconds", sceneStats.buildSeconds},
+                  {"min_height", band.minHeight()},
+                  {"max_height", band.maxHeight()},
+                  {"threads", threads}};
+    if (job.isRaster) stats["raster"] = rasterMeasurements(job, band);
+    if (output) {
+      output->add(band, stats);
+    } else {
+      writeBandFiles(settings.outDir, b, band, run, stats);
+      written.push_back(fmt::format("band-{}.raw", b));
+    }
+  }
+  if (settings.computed) settings.computed();
+
+  if (partial) {
+    const json summary = {{"bands", {first, end}},
+                          {"of", layout.bands},
+                          {"band_rows", layout.bandRows},
+                          {"files", written},
+                          {"seconds", secondsSince(tStart)}};
+    return {RunOutcome::Kind::kBands, summary};
+  }
+  return {RunOutcome::Kind::kTiled,
+          output->finish(sceneStats.buildSeconds, secondsSince(tStart), threads)};
+}
+
+TiledOutput::TiledOutput(const json& run, const std::string& dir)
+    : run_(run),
+      dir_(dir),
+      grid_(gridFromJson(run.at("grid"))),
+      writer_(grid_, (fs::path(dir) / "heights.exr").string(),
+              (fs::path(dir) / "heights.gsf").string(), run.at("title").get<std::string>(),
+              run.at("exr_tile_rows").get<int>()) {
+  // The same reduction as writePreviewPng's for the whole map: blocks of k x k cells
+  // aligned at cell (0, 0), each keeping its minimum.
+  const int64_t longSide = std::max(grid_.nx, grid_.ny);
+  const int64_t maxPixels = std::max(16, PreviewOptions().maxPixels);
+  poolFactor_ = (longSide + maxPixels - 1) / maxPixels;
+  GridSpec pooled = grid_;
+  pooled.spacing = grid_.spacing * double(poolFactor_);
+  pooled.nx = (grid_.nx + poolFactor_ - 1) / poolFactor_;
+  pooled.ny = (grid_.ny + poolFactor_ - 1) / poolFactor_;
+  preview_ = ZMap(pooled, HUGE_VAL);
+}
+
+void TiledOutput::add(const ZMap& band, const json& stats) {
+  const auto t0 = Clock::now();
+  writer_.append(band);
+  const int64_t j0 = band.grid().offsetJ;
+  for (int64_t j = 0; j < band.ny(); ++j)
+    for (int64_t i = 0; i < band.nx(); ++i) {
+      double& z = preview_.at(i / poolFactor_, (j0 + j) / poolFactor_);
+      z = std::min(z, band.at(i, j));
+    }
+  moments_.add(residualMoments(band, wholeMap(band.grid()), LevelPlane()));
+  writeSeconds_ += secondsSince(t0);
+  zMin_ = std::min(zMin_, stats.at("min_height").get<double>());
+  zMax_ = std::max(zMax_, stats.at("max_height").get<double>());
+  castSeconds_ += stats.at("cast_seconds").get<double>();
+  evaluations_ += stats.at("exact_evaluations").get<double>();
+  if (stats.contains("raster")) {
+    const json& r = stats["raster"];
+    raster_["floor_z"] = r.at("floor_z");
+    // A band without cells between the first and last pass has no scallop (-inf,
+    // stored as null); the map's largest scallop is the largest of the bands'.
+    if (r.contains("max_scallop_height")) {
+      const double h =
+          r["max_scallop_height"].is_number() ? r["max_scallop_height"].get<double>() : -HUGE_VAL;
+      raster_["max_scallop_height"] = raster_.contains("max_scallop_height")
+                                          ? std::max(raster_["max_scallop_height"].get<double>(), h)
+                                          : h;
+    }
+  }
+}
+
+json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) {
+  const auto t0 = Clock::now();
+  writer_.close();
+  PreviewOptions preview;
+  preview.title = run_.at("title").get<std::string>();
+  preview.zMin = zMin_;
+  preview.zMax = zMax_;
+  writePreviewPng(preview_, (fs::path(dir_) / "preview.png").string(), preview);
+  writeSeconds_ += secondsSince(t0);
+
+  RunRecord record;
+  record.jobSource = run_.at("job_source").get<std::string>();
+  record.inputs = run_.at("inputs");
+  record.grid = grid_;
+  record.cuttingMoves = run_.at("cutting_moves").get<int64_t>();
+  record.sweptSegments = run_.at("swept_segments").get<int64_t>();
+  record.cullingTiles = run_.at("culling_tiles").get<int64_t>();
+  record.requestedThreads = threads;
+  record.sceneSeconds = sceneSeconds;
+  record.castSeconds = castSeconds_;
+  record.writeSeconds = writeSeconds_;
+  record.minHeight = zMin_;
+  record.maxHeight = zMax_;
+  record.exactEvaluations = evaluations_;
+  record.raster = raster_;
+  // Bands cannot be read twice: unlevelled (heights from the mean), and without Sa,
+  // which needs the mean before the pass (analysis/surface_metrology.h).
+  SurfaceStats surface =
+      statsFromMoments(moments_, LevelPlane(), grid_.spacing * grid_.spacing, false);
+  surface.levelling = Levelling::kNone;
+  record.surfaceStats = surfaceStatsJson(surface);
+  record.surfaceStats["notes"] =
+      record.surfaceStats["notes"].get<std::string>() +
+      "; computed band by band: heights from the mean (no plane levelling) and no Sa. "
+      "`scallop stats heights.gsf` gives all of them from the file";
+  record.tiled = {{"bands", run_.at("bands")},
+                  {"band_rows", run_.at("band_rows")},
+                  {"exr_tile_rows", run_.at("exr_tile_rows")}};
+  record.pathFile = pathFile_;
+  record.totalSeconds = totalSeconds + secondsSince(t0);
+  const json r = simulationReport(record);
+  writeReport(r, dir_);
+  return r;
+}
+
+}  // namespace scallop
