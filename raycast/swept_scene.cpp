@@ -419,7 +419,7 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
     const SweptMove& seg = impl_->segments[cand.segment];
     SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
     ++evaluations;
-    const LowestPoint lp = seg.turning() ? seg.planeHint(x, y) : seg.lowestPoint(x, y, memo);
+    const LowestPoint lp = seg.lowestPoint(x, y, memo);
     TilePlane plane;
     if (planeFrom(seg, lp, x, y, plane)) cand.a = plane.a, cand.b = plane.b, cand.c = plane.c;
   }

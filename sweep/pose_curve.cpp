@@ -33,6 +33,10 @@ Vec3 rotZ(const Vec3& v, double angle) {
   return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
+double clampUnit(double t) {
+  return std::clamp(t, 0.0, 1.0);
+}
+
 }  // namespace
 
 PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where) {
@@ -101,6 +105,23 @@ Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
   const double tiltB = tilt0_ + dTilt_ * tb, spinB = spin0_ + dSpin_ * tb;
   if (kind_ == Kind::TableBC) return rotZ(rotY(rotY(rotZ(v, spinA), tiltA), -tiltB), -spinB);
   return rotZ(rotX(rotX(rotZ(v, spinA), tiltA), -tiltB), -spinB);
+}
+
+Vec3 PoseCurve::spin(double t) const {
+  if (omega_ == 0) return {};
+  if (kind_ == Kind::Slerp) return cross(u_, v_) * phi_;  // a fixed axis, constant rate
+  // R = A(t) B(t) with A = Rz(-C) and B = Ry(-B) or Rx(-A): Omega = Omega_A + A Omega_B.
+  const double spin = spin0_ + dSpin_ * clampUnit(t);
+  const Vec3 tiltAxis = kind_ == Kind::TableBC ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
+  return Vec3{0, 0, -dSpin_} + rotZ(tiltAxis, -spin);
+}
+
+Vec3 PoseCurve::spinRate(double t) const {
+  if (omega_ == 0 || kind_ == Kind::Slerp) return {};
+  // d/dt (A Omega_B) = Omega_A x (A Omega_B); Omega_A is constant.
+  const double spin = spin0_ + dSpin_ * clampUnit(t);
+  const Vec3 tiltAxis = kind_ == Kind::TableBC ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
+  return cross(Vec3{0, 0, -dSpin_}, rotZ(tiltAxis, -spin));
 }
 
 Vec3 PoseCurve::axisRate(double t) const {

@@ -44,6 +44,10 @@ class PoseCurve {
   // v = (p1 - p0) + (axis x axis') x (p - tip), which the kernel uses only to guess.
   Vec3 axisRate(double t) const;
   Pose pose(double t) const { return {tip(t), axis(t)}; }
+  // The cutter's angular velocity Omega(t) (rad per unit t; a direction n fixed to the
+  // cutter has n' = Omega x n) and its derivative Omega'(t).
+  Vec3 spin(double t) const;
+  Vec3 spinRate(double t) const;
   // A direction fixed to the cutter, carried from its pose at ta to its pose at tb:
   // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: swept_move.cpp.)
   Vec3 carry(const Vec3& v, double ta, double tb) const;

@@ -274,6 +274,27 @@ TEST(PoseCurve, CarryMovesTheAxisWithTheCutter) {
   }
 }
 
+// spin() is the angular velocity: a direction fixed to the cutter turns as Omega x n,
+// and spinRate() is its derivative (finite differences of carry() and spin()).
+TEST(PoseCurve, SpinIsTheAngularVelocityOfCarry) {
+  const PoseCurve slerp =
+      PoseCurve::linear({{0, 0, 0}, normalize(Vec3{0.3, 0, 1})}, {{1, 0, 0}, normalize(Vec3{-0.2, 0.4, 1})});
+  const PoseCurve bc = PoseCurve::rotary(RotaryKinematics::TableBC, {}, {1, 0, 0}, 0.2, 0.7, 0.5, -0.4);
+  const PoseCurve ac = PoseCurve::rotary(RotaryKinematics::TableAC, {}, {1, 0, 0}, -0.3, 0.4, 1.5, 2.4);
+  const Vec3 n = normalize(Vec3{0.3, -0.5, -0.8});
+  for (const PoseCurve* c : {&slerp, &bc, &ac}) {
+    for (double t : {0.2, 0.6}) {
+      const double e = 1e-6;
+      const Vec3 moved = c->carry(n, 0.4, t);
+      const Vec3 rate = (c->carry(n, 0.4, t + e) - c->carry(n, 0.4, t - e)) / (2 * e);
+      EXPECT_NEAR(length(rate - cross(c->spin(t), moved)), 0, 1e-7);
+      const Vec3 spinRate = (c->spin(t + e) - c->spin(t - e)) / (2 * e);
+      EXPECT_NEAR(length(spinRate - c->spinRate(t)), 0, 1e-7);
+      EXPECT_LE(length(c->spin(t)), c->turnRate() + 1e-12);
+    }
+  }
+}
+
 TEST(PoseCurve, HalfTurnIsAnInputError) {
   try {
     PoseCurve::linear({{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, -1}}, "path.cl:7");
