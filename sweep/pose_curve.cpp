@@ -39,6 +39,20 @@ double clampUnit(double t) {
 
 }  // namespace
 
+namespace {
+
+// The angle between unit axes from atan2 of the cross and dot products: accurate for
+// small and near-straight turns alike (acos loses half the digits near 0 and pi).
+double turnAngle(const Vec3& a0, const Vec3& a1) {
+  return std::atan2(length(cross(a0, a1)), dot(a0, a1));
+}
+
+}  // namespace
+
+bool PoseCurve::turns(const Vec3& a0, const Vec3& a1) {
+  return turnAngle(normalize(a0), normalize(a1)) > kNoTurn;
+}
+
 PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where) {
   PoseCurve c;
   c.kind_ = Kind::Slerp;
@@ -47,9 +61,7 @@ PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where)
   const Vec3 a0 = normalize(from.axis), a1 = normalize(to.axis);
   c.u_ = a0;
   c.a1_ = a1;
-  // The angle from atan2 of the cross and dot products is accurate for small and for
-  // near-straight turns alike (acos loses half the digits near 0 and pi).
-  const double phi = std::atan2(length(cross(a0, a1)), dot(a0, a1));
+  const double phi = turnAngle(a0, a1);
   if (phi > 3.14159265358979323846 - 1e-9)
     throw InputError(where, "the axis turns by 180 degrees; the rotation is undefined");
   if (phi <= kNoTurn) {

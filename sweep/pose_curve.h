@@ -34,6 +34,8 @@ class PoseCurve {
   // InputError (where = `where`) for a turn of 180 degrees, whose great circle is
   // undefined.
   static PoseCurve linear(const Pose& from, const Pose& to, const char* where = "path move");
+  // Whether slerp from a0 to a1 turns (by more than the 1e-12 rad treated as none).
+  static bool turns(const Vec3& a0, const Vec3& a1);
   // A table-table machine with TCP on: tip linear, rotary angles (radians) linear in t.
   static PoseCurve rotary(RotaryKinematics kinematics, const Vec3& tip0, const Vec3& tip1,
                           double tilt0, double tilt1, double spin0, double spin1);
