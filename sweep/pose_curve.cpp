@@ -74,8 +74,8 @@ PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where)
   return c;
 }
 
-PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& tip1,
-                            double tilt0, double tilt1, double spin0, double spin1) {
+PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& tip1, double tilt0,
+                            double tilt1, double spin0, double spin1) {
   PoseCurve c;
   c.kind_ = kin == RotaryKinematics::TableBC ? Kind::TableBC : Kind::TableAC;
   c.tip0_ = tip0;
@@ -134,17 +134,6 @@ Vec3 PoseCurve::spinRate(double t) const {
   const double spin = spin0_ + dSpin_ * clampUnit(t);
   const Vec3 tiltAxis = kind_ == Kind::TableBC ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
   return cross(Vec3{0, 0, -dSpin_}, rotZ(tiltAxis, -spin));
-}
-
-Vec3 PoseCurve::axisRate(double t) const {
-  if (omega_ == 0) return {};
-  t = std::clamp(t, 0.0, 1.0);
-  if (kind_ == Kind::Slerp) return (v_ * std::cos(phi_ * t) - u_ * std::sin(phi_ * t)) * phi_;
-  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
-  const double st = std::sin(tilt), ct = std::cos(tilt), ss = std::sin(spin), cs = std::cos(spin);
-  if (kind_ == Kind::TableBC)
-    return Vec3{-cs * ct, ss * ct, -st} * dTilt_ + Vec3{ss * st, cs * st, 0} * dSpin_;
-  return Vec3{ss * ct, cs * ct, -st} * dTilt_ + Vec3{cs * st, -ss * st, 0} * dSpin_;
 }
 
 }  // namespace scallop

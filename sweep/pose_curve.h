@@ -42,9 +42,6 @@ class PoseCurve {
 
   Vec3 tip(double t) const;
   Vec3 axis(double t) const;
-  // d axis / dt: with the tip velocity it gives the velocity of every cutter point,
-  // v = (p1 - p0) + (axis x axis') x (p - tip), which the kernel uses only to guess.
-  Vec3 axisRate(double t) const;
   Pose pose(double t) const { return {tip(t), axis(t)}; }
   // The cutter's angular velocity Omega(t) (rad per unit t; a direction n fixed to the
   // cutter has n' = Omega x n) and its derivative Omega'(t).

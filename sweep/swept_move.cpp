@@ -52,8 +52,8 @@ namespace scallop {
 
 namespace {
 
-constexpr double kProofGap = 1e-9;  // mm: proven lower bound and height returned meet
-constexpr int kMaxSamples = 256;    // a guard: typical searches take 3 to 40
+constexpr double kProofGap = 1e-9;   // mm: proven lower bound and height returned meet
+constexpr int kMaxSamples = 256;     // a guard: typical searches take 3 to 40
 constexpr double kFlatSlope = 1e-8;  // mm per unit t: a sample at a minimum of f
 
 // f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
@@ -65,6 +65,7 @@ struct Sample {
   Vec3 normal;   // unit, normal.z < 0; zero when no plane is known
   double hOwn;   // support of K(t) - tip(t) in `normal` (every bound needs it)
   double slope;  // df/dt where known, else NaN
+  Vec3 dn, ddn;  // d/dt and d2/dt2 of `normal` carried with the cutter (steps 2b, 2d)
 };
 
 struct Interval {
@@ -118,8 +119,8 @@ namespace {
 
 // The chord bound of step 2: H >= max over [a.t, b.t] of h_t(N), N unit, given the
 // supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
-double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta,
-                   const Sample& a, double hKa, const Sample& b, double hKb, const Vec3& N) {
+double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta, const Sample& a,
+                   double hKa, const Sample& b, double hKb, const Vec3& N) {
   const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
   const double w = b.t - a.t;
   if (omega == 0 || w <= 0) return h;
@@ -146,9 +147,9 @@ double SweptMove::support(const Vec3& dir) const {
   a.t = 0, a.tip = curve_.tip(0), a.axis = curve_.axis(0);
   b.t = 1, b.tip = curve_.tip(1), b.axis = curve_.axis(1);
   const Vec3 N = dir / len;
-  const double h = supportOver(cutter_, curve_.turnRate(), reach_, curve_.tipEnd() - curve_.tipStart(),
-                               a, dot(N, cutterSupport(cutter_, a.axis, N)), b,
-                               dot(N, cutterSupport(cutter_, b.axis, N)), N);
+  const double h = supportOver(
+      cutter_, curve_.turnRate(), reach_, curve_.tipEnd() - curve_.tipStart(), a,
+      dot(N, cutterSupport(cutter_, a.axis, N)), b, dot(N, cutterSupport(cutter_, b.axis, N)), N);
   // Round-off of the few products above, scaled back to dir's length.
   return len * (h + 1e-12 * (1 + std::fabs(h)));
 }
@@ -200,9 +201,11 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     if (lp.hit && lp.normal.z <= -1e-3) {
       s.normal = lp.normal;
       // f' = (N . v) / N.z, v the velocity of the cutter point at the lowest point.
-      const Vec3 spin = cross(s.axis, curve_.axisRate(t));
+      const Vec3 spin = curve_.spin(t);
       const Vec3 v = delta + cross(spin, Vec3{x, y, s.z} - s.tip);
       s.slope = dot(s.normal, v) / s.normal.z;
+      s.dn = cross(spin, s.normal);
+      s.ddn = cross(curve_.spinRate(t), s.normal) + cross(spin, s.dn);
     } else {
       s.normal = steepNormal(c, s.tip, s.axis, x, y);
     }
@@ -229,14 +232,6 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   //   g'' = N''.(Q - tip) - 2 N'.(p1 - p0), N'' = Omega' x N + Omega x (Omega x N),
   // and |g'''| <= omega^3 D + 3 omega^2 |p1 - p0| (|N^(k)| <= omega^k), D >= |Q - tip|.
   const double move = length(delta);
-  struct CarriedPlane {
-    Vec3 n, dn, ddn;  // N, N', N'' at the sample's pose
-  };
-  auto carriedPlane = [&](const Sample& s) {
-    const Vec3 spin = curve_.spin(s.t);
-    const Vec3 dn = cross(spin, s.normal);
-    return CarriedPlane{s.normal, dn, cross(curve_.spinRate(s.t), s.normal) + cross(spin, dn)};
-  };
   auto distanceBound = [&](const Sample& a, const Sample& b, double zLow, double zHigh) {
     double D = 0;  // >= |Q - tip(t)| for t in [a.t, b.t] and Q.z in [zLow, zHigh]
     for (const Sample* e : {&a, &b})
@@ -258,11 +253,10 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     const double h = from.hOwn;
     const double floor = std::min(a.tip.z, b.tip.z) - reach_;
     const double D = distanceBound(a, b, floor, U);
-    const CarriedPlane p = carriedPlane(from);
-    const double cross2 = 2 * dot(p.dn, delta);
+    const double cross2 = 2 * dot(from.dn, delta);
     double gpp = -HUGE_VAL;  // sup of g'' over the interval and those heights
     for (double z : {floor, U})
-      gpp = std::max(gpp, dot(p.ddn, Vec3{x, y, z} - from.tip) - cross2);
+      gpp = std::max(gpp, dot(from.ddn, Vec3{x, y, z} - from.tip) - cross2);
     gpp += (omega * omega * omega * D + 3 * omega * omega * move) * w;
     const double margin = std::max(0.0, gpp) * w * w / 8;
     auto planeZ = [&](const Vec3& N, const Sample& e) {
@@ -283,11 +277,10 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     const double w = b.t - a.t;
     if (std::max(N.z, curve_.carry(N, from.t, from.t == a.t ? b.t : a.t).z) + omega * w >= 0)
       return false;
-    const CarriedPlane p = carriedPlane(from);
     const Vec3 q = Vec3{x, y, z} - from.tip;
-    const double g0 = dot(N, q) - from.hOwn, g1 = dot(p.dn, q) - dot(N, delta);
+    const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, delta);
     const double D = distanceBound(a, b, z, z);
-    const double m = dot(p.ddn, q) - 2 * dot(p.dn, delta) -
+    const double m = dot(from.ddn, q) - 2 * dot(from.dn, delta) -
                      (omega * omega * omega * D + 3 * omega * omega * move) * w;
     const double ta = a.t - from.t, tb = b.t - from.t;
     double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
@@ -368,7 +361,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
       open[k] = open[--openCount];
       continue;
     }
-    if (iv.lower >= cutoff) return {};     // proven: F >= cutoff
+    if (iv.lower >= cutoff) return {};  // proven: F >= cutoff
     open[(k)] = open[(--openCount)];
 
     const Sample &A = samples[(iv.a)], &B = samples[(iv.b)];
@@ -387,7 +380,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
       const double loss = low.z - iv.lower;
       const double allowed = low.z - (U - kProofGap);
       double step = 0.5;
-      if (loss > 0 && allowed > 0) step = std::clamp(0.8 * std::sqrt(allowed / loss), 1.0 / 64, 0.5);
+      if (loss > 0 && allowed > 0)
+        step = std::clamp(0.8 * std::sqrt(allowed / loss), 1.0 / 64, 0.5);
       ts = fromA ? A.t + step * w : B.t - step * w;
     }
     if (!(ts > A.t && ts < B.t)) continue;  // below double resolution in t: done

@@ -57,9 +57,10 @@ TEST(SceneMemory, EstimateIsAtLeastWhatTheSceneTakes) {
     const long before = peakKb();
     const std::unique_ptr<SweptScene> scene = buildScene(cutter, path, stock, 0.01);
     const double built = double(peakKb() - before) * 1024;
-    std::fprintf(stderr, "scene of %zu turning moves: %.0f bytes built (%.0f a move), %.0f "
-                 "estimated (%.2fx)\n", moves, built, built / double(moves), estimate,
-                 estimate / built);
+    std::fprintf(stderr,
+                 "scene of %zu turning moves: %.0f bytes built (%.0f a move), %.0f "
+                 "estimated (%.2fx)\n",
+                 moves, built, built / double(moves), estimate, estimate / built);
     _exit(built <= estimate && estimate <= 3 * built ? 0 : 1);
   }
   int status = 0;
