@@ -1,46 +1,60 @@
 // The lowest point of the solid swept by a cutter whose axis turns during the move.
 //
 // Notation: pose(t) = (tip(t), axis(t)), t in [0, 1], from a PoseCurve (tip linear,
-// the cutter rotated rigidly about its tip, turn rate omega: pose_curve.h). K(t) is the
-// cutter at pose(t), convex. The swept solid is S = U_t K(t), no longer convex, and its
-// lowest point on the vertical line l through q = (x, y) is
+// the cutter turned rigidly about its tip with angular velocity Omega(t), |Omega| <=
+// omega: pose_curve.h). K(t) is the cutter at pose(t), convex. The swept solid
+// S = U_t K(t) is not convex; its lowest point on the vertical line l through q = (x, y)
+// is
 //     F = min over t of f(t),   f(t) = the lowest point of K(t) on l (+inf: a miss),
 // where each f(t) is exact (cutterLowestPoint, swept_segment.cpp). F is found by branch
 // and bound over t with proven lower bounds, so the answer comes with a proof:
 //
 //   1. Upper bound. Every f(t) evaluated is the height of a real point of S, so the
 //      smallest one evaluated, U, satisfies U >= F.
-//   2. Lower bound on an interval I = [ta, tb], w = tb - ta. For a unit vector N with
-//      N.z < 0 let h_t(N) = max over K(t) of N.p, the support function. Every point of
-//      K(t) on l satisfies N.p <= h_t(N), so
-//          f(t) >= (h_t(N) - N.x x - N.y y) / N.z,
-//      and a bound H >= max over I of h_t(N) bounds f on all of I. H comes from the
-//      two end poses (the chord bound): a point k of the cutter (tip at the origin)
-//      follows g(t) = N.(tip(t) + R(t) k); tip is linear and |R''k| <= omega^2 |k|, so
-//      |g''| <= omega^2 |k| and g lies below its chord plus omega^2 |k| w^2 / 8 (the
-//      interpolation error of a function with bounded second derivative). Hence
-//          H = max(h_ta(N), h_tb(N)) + omega^2 rho w^2 / 8,
-//      where rho bounds |k| over the points that can attain the support during I:
-//      each point's g moves by at most V w, V = |N.(p1 - p0)| + omega reach, so such a
-//      point lies in the cap N.k >= h - 2 V w of K(ta), which for N.a = u < 0 lies
-//      below the height s_max = (|N_perp| R + 2 V w - h) / (-u) along the axis, and
-//      rho = hypot(s_max, R) (the flute top, far from any lowest point, drops out).
-//      N is the normal at the lowest point of K(ta) or K(tb) on l; for a line that
-//      misses K or meets its side, a steep plane leaning out of the footprint.
-//   3. Why this converges fast. With N the normal at the lowest point of a pose where
-//      f is stationary (the envelope's grazing condition: N is normal to the velocity
-//      of the contact point), h_t(N) is flat to first order there, and the chord term
-//      is second order in w: the bound meets f quadratically. Away from the minimum f
-//      rises quadratically while the bound loses only omega^2 rho w^2 / 8, so
-//      intervals growing geometrically away from the minimum are all proven.
-//   4. Search. Best first: the interval with the lowest bound is split, until every
-//      interval's bound is at least U - 1e-9 mm (then F lies in [U - 1e-9, U] and U is
-//      returned) or at least the caller's cutoff (a miss). The split point is the
-//      secant root of f' = (N.v) / N.z (v: the contact point's velocity) where f'
-//      changes sign, else the width the bound can prove, estimated from the current
-//      bound's loss, which is second order: w sqrt(allowed / loss).
-//   The order of the search depends on (x, y) alone (the cutoff only stops it), so
-//   the height returned is the same whatever was evaluated before.
+//   2. Lower bounds of f over an interval I = [ta, tb], w = tb - ta, each proven:
+//   2a. World-fixed plane (the chord bound). For a unit N with N.z < 0 and
+//      h_t(N) = max over K(t) of N.p, every point of K(t) on l has N.p <= h_t(N), so
+//      f(t) >= (h_t(N) - N.x x - N.y y) / N.z, and H >= max over I of h_t(N) bounds f
+//      on I. A cutter point k (tip at the origin) follows g(t) = N.(tip(t) + R(t) k)
+//      with tip linear and |R''k| <= omega^2 |k|, so g lies below its chord plus
+//      omega^2 |k| w^2 / 8 (interpolation error of a function with bounded second
+//      derivative):  H = max(h_ta(N), h_tb(N)) + omega^2 rho w^2 / 8,  rho bounding |k|
+//      over the points that can attain the support during I: each g moves by at most
+//      V w, V = |N.(p1 - p0)| + omega reach, so those points lie in the cap
+//      N.k >= h - 2 V w of K(ta), below s_max = (|N_perp| R + 2 V w - h) / (-N.a) along
+//      the axis: rho = hypot(s_max, R) (the flute top drops out). N is the normal at
+//      the lowest point of K(ta) or K(tb) on l, or, where l misses K or meets its side,
+//      a steep plane leaning out of the footprint.
+//   2b. Cutter-fixed plane. The tangent plane at the lowest point of K(tS) on l, carried
+//      with the cutter: N(t) = R(t) R(tS)^-1 N_S, h = h_tS(N_S) for all t (the cutter
+//      turns rigidly), so K(t) lies in N(t).(p - tip(t)) <= h, and a height z is below
+//      every K(t) of I if g(t) = N(t).(Q - tip(t)) - h > 0 on I, Q = (x, y, z) (with
+//      N.z(t) < 0 on I, g falls as z rises). Its derivatives are in closed form (see
+//      movingPlaneBound), and g >= chord - max(0, sup g'') w^2 / 8 >= min(g(ta), g(tb))
+//      less that margin: only curvature towards the line costs. Where the line meets
+//      a flat face (the bottom of a bull or flat cutter) this plane is the face itself
+//      and the bound is exact; 2a's fixed normal there loses the rim's rotation at
+//      first order.
+//   2c. Grown cutter. Every point of every K(t), t in I, lies within
+//      grow = (|p1 - p0| + omega reach) w / 2 of its place at the middle pose, so the
+//      lowest point of that cutter grown by `grow` (R, r + grow, L + 2 grow, tip grow
+//      lower) bounds f on I, and a line that misses it misses every K(t). Used where l
+//      leaves or grazes a cutter, where planes say little.
+//   2d. Taylor form of 2b at a sample: g(t) >= g + g' tau + m tau^2 / 2 with m the
+//      second derivative at the sample less |g'''| w. Where g curves away from the
+//      line (m > 0) and the sample is a minimum of f (g' ~ 0), this proves both
+//      intervals beside it at once, however wide.
+//   3. Search. First the minimum of f: an interval whose end slopes f' = (N.v) / N.z
+//      (v: velocity of the contact point) change sign is split at the secant root until
+//      the best sample is flat (|f'| <= 1e-8 mm per unit t). Then best first: the
+//      interval with the lowest bound is split (from its lower end, at the width its
+//      bound's second-order loss can prove, w sqrt(allowed / loss)) until every
+//      interval's bound is at least U - 1e-9 mm, so that F lies in [U - 1e-9, U] and U
+//      is returned, or at least the caller's cutoff (a miss). Bounds near the minimum
+//      meet f quadratically and f rises quadratically away from it, so intervals
+//      growing geometrically from the minimum are proven: 3 to 15 samples typically.
+//   The search's order depends on (x, y) alone (the cutoff only stops it), so the
+//   height returned is the same whatever was evaluated before, on any thread.
 #include "sweep/swept_move.h"
 
 #include <algorithm>
