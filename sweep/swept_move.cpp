@@ -131,7 +131,7 @@ size_t SweptMove::bytesPerMove(bool turning) {
 
 namespace {
 
-// The chord bound of step 2: H >= max over [a.t, b.t] of h_t(N), N unit, given the
+// The chord bound of step 2a: H >= max over [a.t, b.t] of h_t(N), N unit, given the
 // supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
 double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta, const Sample& a,
                    double hKa, const Sample& b, double hKb, const Vec3& N) {
@@ -226,7 +226,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c, s.axis, s.normal)) : 0;
     return count++;
   };
-  // Step 2's bound over [a.t, b.t] from one end's plane, less its round-off.
+  // Step 2a's bound over [a.t, b.t] from one end's plane, less its round-off.
   auto planeBound = [&](const Sample& from, const Sample& a, const Sample& b) {
     const Vec3& N = from.normal;
     if (N.z == 0) return -HUGE_VAL;
@@ -238,8 +238,6 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     const double z = (H - nq) / N.z;
     return z - 1e-12 * (1 + std::fabs(H) + std::fabs(nq)) / -N.z;
   };
-  // Step 2b's bound over [a.t, b.t] from the plane fixed to the cutter at `from`'s
-  // lowest point, carried to the other end. Valid below U (see there); needs a hit.
   // Steps 2b and 2d share the plane fixed to the cutter at a sample S and its
   // derivatives: g(t) = N(t).(Q - tip(t)) - h_S with N(t) = R(t) R(tS)^-1 N_S, so that
   //   g'  = N'.(Q - tip) - N.(p1 - p0),     N'  = Omega x N,
