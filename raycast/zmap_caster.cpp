@@ -97,7 +97,7 @@ CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& option
   // Regions no wider than the scene's tile boxes were grown for (a region of n cells
   // spans n - 1 spacings between its outer cell centres); 1 means cell by cell.
   const int64_t region = std::max<int64_t>(
-      1, std::min(options.regionCells,
+      1, std::min(options.regionCells > 0 ? options.regionCells : INT64_MAX,
                   int64_t(std::floor(2 * scene.regionHalfSize() / g.spacing + 1e-9)) + 1));
 
   CastStats stats;

@@ -11,7 +11,9 @@ namespace scallop {
 
 struct CastOptions {
   int64_t tileCells = 64;    // cells per side of a parallel work item
-  int64_t regionCells = 32;  // cells per side of a candidate region (one Embree ray each)
+  // Cells per side of a candidate region (one Embree ray each); 0: as many as the
+  // scene's tiles were grown for (sceneOptionsFor: about 64 um a side, 8 to 32 cells).
+  int64_t regionCells = 0;
   // Called from worker threads (serialised) with cells done so far and the total.
   std::function<void(int64_t done, int64_t total)> progress;
 };
