@@ -51,32 +51,39 @@ TEST_F(BenchCli, TableOnStdoutAndUsageErrors) {
   EXPECT_EQ(run("bench --area -1").status, 2);
 }
 
-TEST(BenchCases, FreeformPathFollowsTheSurfaceAlongXWithOneAxisPerMove) {
+// B3 is the freeform path as CAM writes it: CL text read back through the CL-text
+// reader, with the axis of every CL point, so the axis turns inside every move; B3c
+// has the same tips with one axis per move. Both run along +X at a constant y with tips
+// on the surface (B3 to the text's 6 decimals), and consecutive moves share a pose.
+TEST(BenchCases, FreeformPathsFollowTheSurfaceAlongX) {
   BenchCaseOptions options;
   options.area = 1;
-  const BenchCase b = makeBenchCase("B3", options);
-  ASSERT_GT(b.path.cuttingMoves(), 0u);
-  const Move* previous = nullptr;
-  for (const Move& mv : b.path.moves) {
-    if (mv.rapid) {
-      previous = nullptr;
-      continue;
+  for (const char* name : {"B3", "B3c"}) {
+    const BenchCase b = makeBenchCase(name, options);
+    const bool turning = std::string(name) == "B3";
+    ASSERT_GT(b.path.cuttingMoves(), 0u);
+    const Move* previous = nullptr;
+    size_t turningMoves = 0;
+    for (const Move& mv : b.path.moves) {
+      if (mv.rapid) {
+        previous = nullptr;
+        continue;
+      }
+      EXPECT_NEAR(length(mv.from.axis), 1.0, 1e-12);
+      turningMoves += mv.from.axis != mv.to.axis;
+      EXPECT_EQ(mv.from.tip.y, mv.to.tip.y);
+      EXPECT_NEAR(mv.to.tip.x - mv.from.tip.x, 0.05, 1e-3);
+      for (const Pose& p : {mv.from, mv.to})
+        EXPECT_NEAR(p.tip.z, freeformHeight(p.tip.x, p.tip.y), turning ? 1e-6 : 0) << name;
+      if (previous) {
+        EXPECT_EQ(previous->to.tip, mv.from.tip);
+        if (turning) EXPECT_EQ(previous->to.axis, mv.from.axis);
+      }
+      previous = &mv;
     }
-    // Each move holds one unit axis (see makeFreeformPath for why), runs along +X at
-    // a constant y, and its tips lie on the surface; consecutive moves share a tip.
-    EXPECT_NEAR(length(mv.from.axis), 1.0, 1e-12);
-    EXPECT_EQ(mv.from.axis, mv.to.axis);
-    EXPECT_EQ(mv.from.tip.y, mv.to.tip.y);
-    EXPECT_NEAR(mv.to.tip.x - mv.from.tip.x, 0.05, 1e-3);
-    for (const Pose& p : {mv.from, mv.to}) {
-      EXPECT_EQ(p.tip.z, freeformHeight(p.tip.x, p.tip.y));
-    }
-    if (previous) {
-      EXPECT_EQ(previous->to.tip, mv.from.tip);
-    }
-    previous = &mv;
+    EXPECT_EQ(turningMoves, turning ? b.path.cuttingMoves() : 0u) << name;
+    EXPECT_EQ(b.grid.spacing, 0.002);
   }
-  EXPECT_EQ(b.grid.spacing, 0.002);
   EXPECT_EQ(makeBenchCase("B2", options).path.cuttingMoves(), 2u * 180u);
 }
 

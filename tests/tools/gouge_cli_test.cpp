@@ -99,6 +99,9 @@ TEST_F(GougeCli, BadInputAndUsage) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("--inclination-axis"), std::string::npos) << r.err;
   EXPECT_EQ(run("gouge " + path("d.stl") + " --length 10").status, 2);  // --radius missing
+  // Turning moves are swept exactly now: the old tolerance is an unknown option.
+  EXPECT_EQ(run("gouge " + path("d.stl") + " --radius 3 --length 10 --axis-tolerance 1e-3").status,
+            2);
   EXPECT_EQ(run("surface --shape cube -o " + path("c.stl")).status, 1);
   EXPECT_FALSE(fs::exists(path("c.stl")));
   EXPECT_EQ(run("gouge " + path("missing.stl") + " --radius 3 --length 10").status, 1);
