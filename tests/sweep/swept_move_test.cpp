@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <vector>
 
 #include "sweep/brute_force_reference.h"
 #include "sweep/input_error.h"
@@ -262,16 +263,19 @@ TEST(PoseCurve, SlerpEndsExactlyAndTurnsAtConstantSpeed) {
   }
 }
 
+// One curve of each kind: CL slerp, xyzbc-trt and xyzac-trt with TCP on.
+std::vector<PoseCurve> threeKinds() {
+  return {PoseCurve::linear({{0, 0, 0}, normalize(Vec3{0.3, 0, 1})},
+                            {{1, 0, 0}, normalize(Vec3{-0.2, 0.4, 1})}),
+          PoseCurve::rotary(RotaryKinematics::TableBC, {}, {1, 0, 0}, 0.2, 0.7, 0.5, -0.4),
+          PoseCurve::rotary(RotaryKinematics::TableAC, {}, {1, 0, 0}, -0.3, 0.4, 1.5, 2.4)};
+}
+
 // carry() moves a direction fixed to the cutter: the axis itself goes to the axis, and
 // for a rotary curve it agrees with the rotation that the axis formula implies.
 TEST(PoseCurve, CarryMovesTheAxisWithTheCutter) {
-  const PoseCurve slerp = PoseCurve::linear({{0, 0, 0}, normalize(Vec3{0.3, 0, 1})},
-                                            {{1, 0, 0}, normalize(Vec3{-0.2, 0.4, 1})});
-  const PoseCurve bc =
-      PoseCurve::rotary(RotaryKinematics::TableBC, {}, {1, 0, 0}, 0.2, 0.7, 0.5, -0.4);
-  const PoseCurve ac =
-      PoseCurve::rotary(RotaryKinematics::TableAC, {}, {1, 0, 0}, -0.3, 0.4, 1.5, 2.4);
-  for (const PoseCurve* c : {&slerp, &bc, &ac}) {
+  for (const PoseCurve& curve : threeKinds()) {
+    const PoseCurve* c = &curve;
     for (double ta : {0.0, 0.3}) {
       for (double tb : {0.25, 1.0}) {
         EXPECT_NEAR(length(c->carry(c->axis(ta), ta, tb) - c->axis(tb)), 0, 1e-12);
@@ -286,14 +290,9 @@ TEST(PoseCurve, CarryMovesTheAxisWithTheCutter) {
 // spin() is the angular velocity: a direction fixed to the cutter turns as Omega x n,
 // and spinRate() is its derivative (finite differences of carry() and spin()).
 TEST(PoseCurve, SpinIsTheAngularVelocityOfCarry) {
-  const PoseCurve slerp = PoseCurve::linear({{0, 0, 0}, normalize(Vec3{0.3, 0, 1})},
-                                            {{1, 0, 0}, normalize(Vec3{-0.2, 0.4, 1})});
-  const PoseCurve bc =
-      PoseCurve::rotary(RotaryKinematics::TableBC, {}, {1, 0, 0}, 0.2, 0.7, 0.5, -0.4);
-  const PoseCurve ac =
-      PoseCurve::rotary(RotaryKinematics::TableAC, {}, {1, 0, 0}, -0.3, 0.4, 1.5, 2.4);
   const Vec3 n = normalize(Vec3{0.3, -0.5, -0.8});
-  for (const PoseCurve* c : {&slerp, &bc, &ac}) {
+  for (const PoseCurve& curve : threeKinds()) {
+    const PoseCurve* c = &curve;
     for (double t : {0.2, 0.6}) {
       const double e = 1e-6;
       const Vec3 moved = c->carry(n, 0.4, t);
