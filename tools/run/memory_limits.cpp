@@ -1,0 +1,108 @@
+#include "tools/run/memory_limits.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "raycast/swept_scene.h"
+#include "sweep/input_error.h"
+#include "tools/io/job.h"
+
+namespace scallop {
+
+double availableMemoryBytes() {
+  double available = 0;
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kb = 0;
+  std::string unit;
+  while (meminfo >> key >> kb >> unit)
+    if (key == "MemAvailable:") available = kb * 1024;
+  return available > 0 ? available : 8.0 * (1ull << 30);
+}
+
+void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
+  // Heights are held in double, plus one float32 row buffer per image while writing.
+  const double cells = double(grid.nx) * double(grid.ny);
+  const double need = cells * (sizeof(double) + sizeof(float));
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "a " << grid.nx << " x " << grid.ny << " grid needs " << need / double(1ull << 30)
+        << " GiB (" << std::fixed << std::setprecision(0) << need << " bytes) of memory, but only "
+        << std::defaultfloat << std::setprecision(3) << available / double(1ull << 30)
+        << " GiB are available; use a larger spacing, a smaller stock, or --method exact with "
+           "--tiled (bands of rows, bounded memory)";
+    throw InputError(field, msg.str());
+  }
+}
+
+// makeRaster holds every move (up to its own limit of 5e7): refuse, before generating
+// it, a raster whose moves alone would not fit in memory. Counts as sweep/raster.cpp
+// does; invalid values are left to makeRaster's messages.
+void checkRasterFitsMemory(const Job& job) {
+  const RasterSpec& r = job.raster;
+  if (!(r.stepOver > 0) || !(r.segmentLength >= 0)) return;
+  const bool alongX = r.direction == 'x';
+  const double cross =
+      alongX ? job.stock.max.y - job.stock.min.y : job.stock.max.x - job.stock.min.x;
+  const double feed =
+      (alongX ? job.stock.max.x - job.stock.min.x : job.stock.max.y - job.stock.min.y) +
+      2 * job.cutter.radius + 2;
+  const double passes = std::floor(cross / r.stepOver + 1e-9) + 1;
+  const double moves = passes * (r.segmentLength > 0 ? std::ceil(feed / r.segmentLength) + 1 : 2);
+  const double need = moves * double(sizeof(Move));
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg << "gives " << moves << " moves, which need " << std::setprecision(15) << need
+        << " bytes of memory, but only " << std::fixed << std::setprecision(1)
+        << available / double(1ull << 30) << " GiB are available";
+    throw InputError(r.segmentLength > 0 ? "path.raster.segment_length" : "path.raster.step_over",
+                     msg.str());
+  }
+}
+
+void checkSceneFitsMemory(const Job& job) {
+  // The culling scene (raycast/swept_scene.cpp) cuts each move's xy box into tiles of
+  // side cullingTileSide() and keeps those the cutter reaches below the stock top.
+  // Measured (1e6 short 3-axis moves, ball R = 1: 33.8e6 tiles, 18.5 GB peak, before
+  // short moves got 16 tiles instead of 64): ~500 bytes a tile (box, planes, Embree
+  // BVH) and about half the tile grid kept; plus the move, its swept segment and its
+  // file line. An estimate, used only
+  // to refuse what clearly cannot run; moves that turn the axis are subdivided into
+  // more segments than counted here, so it errs low, never high.
+  constexpr double kBytesPerTile = 500, kTilesKept = 0.5, kBytesPerMove = 400;
+  const double R = job.cutter.radius, flute = job.cutter.fluteLength;
+  const double top = job.stock.max.z;
+  double need = 0;
+  size_t moves = 0;
+  for (const Move& m : job.path.moves) {
+    if (m.rapid || std::fmin(m.from.tip.z, m.to.tip.z) - R - flute >= top) continue;
+    const double lean =
+        std::fmax(std::hypot(m.from.axis.x, m.from.axis.y), std::hypot(m.to.axis.x, m.to.axis.y));
+    const double reach = 2 * (R + flute * lean);
+    const double w = std::fabs(m.to.tip.x - m.from.tip.x) + reach;
+    const double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
+    const double length =
+        std::hypot(m.to.tip.x - m.from.tip.x, m.to.tip.y - m.from.tip.y, m.to.tip.z - m.from.tip.z);
+    const double T = cullingTileSide(R, length, w * h, SceneOptions());
+    need += kBytesPerMove + kTilesKept * kBytesPerTile * std::ceil(w / T) * std::ceil(h / T);
+    ++moves;
+  }
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg << "the exact simulation of " << moves << " cutting moves needs about "
+        << std::setprecision(need < 1e15 ? 15 : 3) << need << " bytes (" << std::fixed
+        << std::setprecision(1) << need / double(1ull << 30)
+        << " GiB) of memory for its culling scene, but only " << available / double(1ull << 30)
+        << " GiB are available; split the path into several jobs (--tiled bounds only the "
+           "height map's memory, not the scene's)";
+    throw InputError(job.source + ": path", msg.str());
+  }
+}
+
+}  // namespace scallop
