@@ -243,8 +243,6 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   writer_.close();
   PreviewOptions preview;
   preview.title = run_.at("title").get<std::string>();
-  preview.zMin = zMin_;
-  preview.zMax = zMax_;
   writePreviewPng(preview_, (fs::path(dir_) / "preview.png").string(), preview);
   writeSeconds_ += secondsSince(t0);
 
