@@ -77,7 +77,7 @@ DesignComparison compareWithDesign(const ZMap& machined, const MeshIndex& design
 
 struct MoveFinder::Impl {
   struct Entry {
-    SweptSegment segment;
+    SweptMove segment;
     size_t move;
   };
   std::vector<Entry> entries;
@@ -96,7 +96,7 @@ struct MoveFinder::Impl {
   }
 };
 
-MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path, const SweepOptions& options,
+MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path,
                        const std::vector<Box3>& areas)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
@@ -142,7 +142,7 @@ MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path, const SweepOp
     if (!near) continue;
     m.moveToSlot[k] = int64_t(m.firstEntry.size());
     m.firstEntry.emplace_back();
-    for (const SweptSegment& s : sweepToolPath(cutter, one, options)) {
+    for (const SweptMove& s : sweepToolPath(cutter, one)) {
       const uint32_t e = uint32_t(m.entries.size());
       m.entries.push_back({s, k});
       m.firstEntry.back().push_back(e);
@@ -191,7 +191,7 @@ double MoveFinder::moveHeight(size_t move, double x, double y) const {
 }
 
 void attributeGouges(DesignComparison& comparison, const ZMap& machined, const Cutter& cutter,
-                     const ToolPath& path, const SweepOptions& options, int cellsPerGouge) {
+                     const ToolPath& path, int cellsPerGouge) {
   if (comparison.gouges.empty()) return;
   const GridSpec& g = comparison.grid;
   // The deepest cells of each region: a flood from its deepest cell, ranked by depth.
@@ -233,7 +233,7 @@ void attributeGouges(DesignComparison& comparison, const ZMap& machined, const C
     }
     cells[r] = std::move(region);
   }
-  const MoveFinder finder(cutter, path, options, areas);
+  const MoveFinder finder(cutter, path, areas);
   tbb::parallel_for(size_t(0), comparison.gouges.size(), [&](size_t r) {
     std::vector<size_t>& moves = comparison.gouges[r].moves;
     for (int64_t k : cells[r]) {

@@ -65,8 +65,7 @@ DesignComparison compareWithDesign(const ZMap& machined, const MeshIndex& design
 // of `areas` (xy boxes, mm) are swept, so a huge path costs memory only near them.
 class MoveFinder {
  public:
-  MoveFinder(const Cutter& cutter, const ToolPath& path, const SweepOptions& options,
-             const std::vector<Box3>& areas);
+  MoveFinder(const Cutter& cutter, const ToolPath& path, const std::vector<Box3>& areas);
   ~MoveFinder();
   MoveFinder(const MoveFinder&) = delete;
   MoveFinder& operator=(const MoveFinder&) = delete;
@@ -88,6 +87,6 @@ class MoveFinder {
 // the machined height at each region's deepest cells (at most `cellsPerGouge` of
 // them, deepest first).
 void attributeGouges(DesignComparison& comparison, const ZMap& machined, const Cutter& cutter,
-                     const ToolPath& path, const SweepOptions& options, int cellsPerGouge = 16);
+                     const ToolPath& path, int cellsPerGouge = 16);
 
 }  // namespace scallop

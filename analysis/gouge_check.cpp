@@ -127,7 +127,6 @@ GougeMap gougeMap(const MeshIndex& index, const Cutter& cutter, const ToolPath& 
     stock.max = {grid.originX + grid.nx * grid.spacing, grid.originY + grid.ny * grid.spacing,
                  g.stockTop};
     SimulationOptions sim;
-    sim.sweep = options.sweep;
     sim.tileSize = options.tileSize > 0 ? options.tileSize : 0.5 * cutter.radius;
     SimulationResult r = simulate(cutter, path, stock, grid, sim);
     g.stats.sweptSegments = r.scene.segments;

@@ -60,7 +60,6 @@ Penetration cylinderPenetration(const TriangleMesh& mesh, const std::vector<uint
 
 struct GougeMapOptions {
   double tolerance = 1e-3;  // mm: machined below design by more than this is a gouge
-  SweepOptions sweep;       // axis interpolation tolerance of moves that turn the axis
   // Culling tile of the swept scene, mm; <= 0: R / 2. A flank cutter lies on its side,
   // so each swept segment covers about 2R x L: the simulate default (R / 8) would
   // give hundreds of tiles per segment.

@@ -14,7 +14,7 @@
 #include "raycast/zmap_caster.h"
 #include "sweep/input_error.h"
 #include "sweep/raster.h"
-#include "sweep/swept_segment.h"
+#include "sweep/swept_move.h"
 
 namespace scallop {
 
@@ -85,8 +85,8 @@ SimulatedPass::SimulatedPass(const Cutter& cutter, double leadDeg, double tiltDe
   const double xExtent =
       std::max(cutterSupport(cutter, axis_, feed).x, -cutterSupport(cutter, axis_, -feed).x);
   halfLength_ = xExtent + 1.0;
-  std::vector<SweptSegment> segments;
-  segments.emplace_back(cutter, tip_ - feed * halfLength_, tip_ + feed * halfLength_, axis_);
+  std::vector<SweptMove> segments;
+  segments.emplace_back(SweptSegment(cutter, tip_ - feed * halfLength_, tip_ + feed * halfLength_, axis_));
   SceneOptions sceneOptions;
   sceneOptions.stockTop = ceiling_;
   scene_ = std::make_unique<SweptScene>(std::move(segments), sceneOptions);
@@ -192,10 +192,10 @@ SimulatedCusp SimulatedPass::cusp(double stepOverMm) const {
   SimulatedCusp out;
   if (!std::isfinite(stepOverMm) || stepOverMm <= 0) return out;
   const Vec3 feed{1, 0, 0}, cross{0, stepOverMm, 0};
-  std::vector<SweptSegment> segments;
-  segments.emplace_back(cutter_, tip_ - feed * halfLength_, tip_ + feed * halfLength_, axis_);
-  segments.emplace_back(cutter_, tip_ + cross - feed * halfLength_,
-                        tip_ + cross + feed * halfLength_, axis_);
+  std::vector<SweptMove> segments;
+  segments.emplace_back(SweptSegment(cutter_, tip_ - feed * halfLength_, tip_ + feed * halfLength_, axis_));
+  segments.emplace_back(SweptSegment(cutter_, tip_ + cross - feed * halfLength_,
+                        tip_ + cross + feed * halfLength_, axis_));
   SceneOptions sceneOptions;
   sceneOptions.stockTop = ceiling_;
   const SweptScene scene(std::move(segments), sceneOptions);

@@ -14,7 +14,7 @@ SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const Simulation
 std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
                                        const Box3& stock, double spacing,
                                        const SimulationOptions& options) {
-  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.sweep),
+  return std::make_unique<SweptScene>(sweepToolPath(cutter, path),
                                       sceneOptionsFor(stock, spacing, options));
 }
 

@@ -13,7 +13,6 @@
 namespace scallop {
 
 struct SimulationOptions {
-  SweepOptions sweep;
   double tileSize = 0;  // scene culling tile, mm (SceneOptions::tileSize)
   CastOptions cast;
 };

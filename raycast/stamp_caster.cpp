@@ -10,9 +10,9 @@ namespace scallop {
 
 namespace {
 
-// One stamp: the stationary cutter of `segment` with its tip at `tip`.
+// One stamp: the stationary cutter of move `segment` at one pose.
 struct Stamp {
-  Vec3 tip;
+  Vec3 tip, axis;
   double lowest;          // its lowest point's z, mm: cells at or below it are untouched
   double x0, x1, y0, y1;  // xy footprint box, mm
   uint32_t segment;
@@ -47,7 +47,7 @@ double stampStepFor(const Cutter& cutter, const Vec3& axis, double tolerance) {
   return 0.5 * step;  // Meusnier margin, see the header
 }
 
-StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
+StampStats stampZMap(const std::vector<SweptMove>& segments, ZMap& map,
                      const StampOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   const GridSpec& g = map.grid();
@@ -63,20 +63,26 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
   double widest = 0;
   stats.minStep = HUGE_VAL;
   for (size_t k = 0; k < segments.size(); ++k) {
-    const SweptSegment& seg = segments[k];
+    const SweptMove& seg = segments[k];
     const Cutter& c = seg.cutter();
-    const Vec3& a = seg.axis();
-    const double step = options.step > 0 ? options.step : stampStepFor(c, a, options.tolerance);
+    const PoseCurve& curve = seg.curve();
+    // A turning axis moves the cutter's lower part (within R of the tip) by up to
+    // R omega per unit t besides the tip's motion: the stamps are spaced for both.
+    const double step = options.step > 0 ? options.step
+                                         : stampStepFor(c, curve.axis(0), options.tolerance);
     stats.minStep = std::min(stats.minStep, step);
-    const double lowest = cutterSupport(c, a, {0, 0, -1}).z;
-    const double bx0 = cutterSupport(c, a, {-1, 0, 0}).x, bx1 = cutterSupport(c, a, {1, 0, 0}).x;
-    const double by0 = cutterSupport(c, a, {0, -1, 0}).y, by1 = cutterSupport(c, a, {0, 1, 0}).y;
-    widest = std::max({widest, bx1 - bx0, by1 - by0});
-    const Vec3 d = seg.end() - seg.start();
-    const int64_t n = std::max<int64_t>(1, int64_t(std::ceil(length(d) / step)));
+    const double travel = length(seg.end() - seg.start()) + c.radius * curve.turnRate();
+    const int64_t n = std::max<int64_t>(1, int64_t(std::ceil(travel / step)));
     for (int64_t i = 0; i <= n; ++i) {
       Stamp s;
-      s.tip = seg.start() + d * (double(i) / double(n));
+      const double t = double(i) / double(n);
+      s.tip = curve.tip(t);
+      s.axis = curve.axis(t);
+      const Vec3& a = s.axis;
+      const double lowest = cutterSupport(c, a, {0, 0, -1}).z;
+      const double bx0 = cutterSupport(c, a, {-1, 0, 0}).x, bx1 = cutterSupport(c, a, {1, 0, 0}).x;
+      const double by0 = cutterSupport(c, a, {0, -1, 0}).y, by1 = cutterSupport(c, a, {0, 1, 0}).y;
+      widest = std::max({widest, bx1 - bx0, by1 - by0});
       s.lowest = s.tip.z + lowest;
       s.x0 = s.tip.x + bx0, s.x1 = s.tip.x + bx1, s.y0 = s.tip.y + by0, s.y1 = s.tip.y + by1;
       s.segment = uint32_t(k);
@@ -134,7 +140,7 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
         for (uint32_t k : mine) {
           const Stamp& s = stamps[k];
           if (s.x1 < x0 || s.x0 > x1 || s.y1 < y0 || s.y0 > y1) continue;
-          const SweptSegment& seg = segments[s.segment];
+          const SweptMove& seg = segments[s.segment];
           int64_t a0, a1, b0, b1;
           cellRange(s.x0, s.x1, g.originX, g.spacing, i1, a0, a1);
           cellRange(s.y0, s.y1, g.originY, g.spacing, j1, b0, b1);
@@ -146,7 +152,7 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
               if (h <= s.lowest) continue;  // this stamp cannot go lower here
               ++evals;
               const LowestPoint lp =
-                  cutterLowestPoint(seg.cutter(), seg.axis(), g.cellCentreX(i) - s.tip.x, y);
+                  cutterLowestPoint(seg.cutter(), s.axis, g.cellCentreX(i) - s.tip.x, y);
               if (lp.hit) h = std::min(h, lp.z + s.tip.z);
             }
           }
@@ -160,9 +166,8 @@ StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
 }
 
 StampSimulationResult simulateStamped(const Cutter& cutter, const ToolPath& path, const Box3& stock,
-                                      const GridSpec& grid, const SweepOptions& sweep,
-                                      const StampOptions& options) {
-  const std::vector<SweptSegment> segments = sweepToolPath(cutter, path, sweep);
+                                      const GridSpec& grid, const StampOptions& options) {
+  const std::vector<SweptMove> segments = sweepToolPath(cutter, path);
   StampSimulationResult result;
   result.segments = segments.size();
   result.map = ZMap(grid, stock.max.z);

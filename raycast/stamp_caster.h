@@ -14,7 +14,7 @@
 
 #include "raycast/zmap.h"
 #include "sweep/pose.h"
-#include "sweep/swept_segment.h"
+#include "sweep/swept_move.h"
 #include "sweep/tool_path_sweep.h"
 
 namespace scallop {
@@ -35,7 +35,7 @@ namespace scallop {
 double stampStepFor(const Cutter& cutter, const Vec3& axis, double tolerance);
 
 struct StampOptions {
-  double step = 0;          // mm between stamps; <= 0: stampStepFor(..., tolerance) per segment
+  double step = 0;          // mm between stamps; <= 0: stampStepFor(..., tolerance) per move
   double tolerance = 1e-4;  // mm, for the derived step
   int64_t tileCells = 64;   // cells per side of a parallel work item
   // Called from worker threads (serialised) with cells done so far and the total.
@@ -51,23 +51,21 @@ struct StampStats {
   double evaluationsPerCell() const { return cells ? double(exactEvaluations) / cells : 0; }
 };
 
-// Lowers every cell of `map` to the lowest height of the cutter stamped along each
-// segment (both ends included). Parallel over tiles of cells; each tile visits the
+// Lowers every cell of `map` to the lowest height of the cutter stamped at evenly
+// spaced poses of each move's pose curve (both ends included). Parallel over tiles of cells; each tile visits the
 // stamps whose footprint overlaps it, so there are no races and the result does not
 // depend on the number of threads.
-StampStats stampZMap(const std::vector<SweptSegment>& segments, ZMap& map,
+StampStats stampZMap(const std::vector<SweptMove>& segments, ZMap& map,
                      const StampOptions& options = {});
 
 struct StampSimulationResult {
   ZMap map;
-  size_t segments = 0;  // constant-axis swept segments the path became
+  size_t segments = 0;  // swept moves the path became
   StampStats stamp;
 };
 
-// The stamping counterpart of simulate(): the same sweep into segments (so moves with
-// a turning axis are split the same way), then stampZMap instead of the exact scene.
+// The stamping counterpart of simulate(): the same moves, stamped instead of swept.
 StampSimulationResult simulateStamped(const Cutter& cutter, const ToolPath& path, const Box3& stock,
-                                      const GridSpec& grid, const SweepOptions& sweep = {},
-                                      const StampOptions& options = {});
+                                      const GridSpec& grid, const StampOptions& options = {});
 
 }  // namespace scallop

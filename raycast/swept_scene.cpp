@@ -85,7 +85,7 @@ double planeBoundOver(const TileBox& t, double x0, double y0, double x1, double 
 }
 // The plane N . p = h_C(N) below a swept solid C, as z >= a + b x + c y (N.z < 0): it
 // bounds every height of C from below, everywhere.
-TilePlane planeBelow(const SweptSegment& seg, const Vec3& N) {
+TilePlane planeBelow(const SweptMove& seg, const Vec3& N) {
   const double h = seg.support(N);
   return {h / N.z, -N.x / N.z, -N.y / N.z};
 }
@@ -97,7 +97,7 @@ TilePlane planeBelow(const SweptSegment& seg, const Vec3& N) {
 // the nearest point of the move's tip path: it rises by 1 mm per um outside the
 // footprint, so cells beyond the rim are culled without an evaluation. Returns false
 // when neither applies (the point lies on the tip path itself).
-bool planeFrom(const SweptSegment& seg, const LowestPoint& lp, double x, double y,
+bool planeFrom(const SweptMove& seg, const LowestPoint& lp, double x, double y,
                TilePlane& plane) {
   if (lp.hit && lp.normal.z <= -1e-3) {
     plane = planeBelow(seg, lp.normal);
@@ -121,7 +121,7 @@ double planeSlack(double v) {
 }  // namespace
 
 struct SweptScene::Impl {
-  std::vector<SweptSegment> segments;
+  std::vector<SweptMove> segments;
   std::vector<TileBox> tiles;
   SceneStats stats;
   double originZ = 0;
@@ -156,7 +156,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   }
   const double bound = planeBoundAt(tile, cell->x, cell->y);
   if (bound - planeSlack(bound) >= cell->best) return;
-  const SweptSegment& seg = impl->segments[tile.segment];
+  const SweptMove& seg = impl->segments[tile.segment];
   ++cell->evaluations;
   SectionMemo* memo = cell->cache ? cell->cache->memoFor(tile.segment, cell->y) : nullptr;
   const LowestPoint lp = seg.lowestPoint(cell->x, cell->y, memo, cell->best);
@@ -210,7 +210,7 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
   std::vector<std::vector<TileBox>> perSegment(segments.size());
   std::vector<size_t> evalsPerSegment(segments.size(), 0);
   tbb::parallel_for(size_t(0), segments.size(), [&](size_t k) {
-    const SweptSegment& seg = segments[k];
+    const SweptMove& seg = segments[k];
     const Box3 box = seg.bounds();
     if (box.min.z >= stockTop) return;  // never below the stock top: cannot cut
     const double T = cullingTileSide(seg.cutter().radius, length(seg.end() - seg.start()),
@@ -249,7 +249,7 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
         const double sx[5] = {0.5 * (x0 + x1), x0, x1, x0, x1};
         const double sy[5] = {0.5 * (y0 + y1), y0, y0, y1, y1};
         for (int s = 0; s < kSamplesPerTile; ++s) {
-          const LowestPoint lp = seg.lowestPoint(sx[s], sy[s]);
+          const LowestPoint lp = seg.planeHint(sx[s], sy[s]);
           ++evalsPerSegment[k];
           TilePlane plane;
           if (!planeFrom(seg, lp, sx[s], sy[s], plane)) continue;
@@ -302,14 +302,14 @@ void SweptScene::Impl::buildEmbree() {
     throw std::runtime_error(lastError.empty() ? "Embree: scene build failed" : lastError);
 }
 
-SweptScene::SweptScene(std::vector<SweptSegment> segments, const SceneOptions& options)
+SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& options)
     : impl_(std::make_unique<Impl>()), regionHalfSize_(options.regionHalfSize) {
   const auto t0 = std::chrono::steady_clock::now();
   impl_->segments = std::move(segments);
   if (impl_->segments.size() > UINT32_MAX) throw std::runtime_error("too many segments");
   impl_->stats.segments = impl_->segments.size();
   double zMin = options.stockTop;
-  for (const SweptSegment& s : impl_->segments) zMin = std::min(zMin, s.bounds().min.z);
+  for (const SweptMove& s : impl_->segments) zMin = std::min(zMin, s.bounds().min.z);
   impl_->originZ = zMin - 1;
   impl_->buildTiles(options);
   impl_->buildEmbree();
@@ -322,7 +322,7 @@ SweptScene::~SweptScene() {
   if (impl_->device) rtcReleaseDevice(impl_->device);
 }
 
-const std::vector<SweptSegment>& SweptScene::segments() const {
+const std::vector<SweptMove>& SweptScene::segments() const {
   return impl_->segments;
 }
 const SceneStats& SweptScene::stats() const {
@@ -416,10 +416,10 @@ void SweptScene::gatherCandidates(double x0, double y0, double x1, double y1, do
 void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x, double y,
                                    uint64_t& evaluations, QueryCache* cache) const {
   for (Candidate& cand : candidates) {
-    const SweptSegment& seg = impl_->segments[cand.segment];
+    const SweptMove& seg = impl_->segments[cand.segment];
     SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
     ++evaluations;
-    const LowestPoint lp = seg.lowestPoint(x, y, memo);
+    const LowestPoint lp = seg.turning() ? seg.planeHint(x, y) : seg.lowestPoint(x, y, memo);
     TilePlane plane;
     if (planeFrom(seg, lp, x, y, plane)) cand.a = plane.a, cand.b = plane.b, cand.c = plane.c;
   }

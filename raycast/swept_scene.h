@@ -7,7 +7,7 @@
 // solid). A ray cast upwards from below meets the boxes in order of those bounds; each
 // exact evaluation lowers the ray's far end, so boxes that start above the lowest
 // height found so far are never entered. Heights themselves are always computed in
-// double by SweptSegment::lowestPoint.
+// double by SweptMove::lowestPoint.
 #pragma once
 
 #include <cmath>
@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-#include "sweep/swept_segment.h"
+#include "sweep/swept_move.h"
 
 namespace scallop {
 
@@ -35,7 +35,7 @@ double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
                        const SceneOptions& options);
 
 struct SceneStats {
-  size_t segments = 0;
+  size_t segments = 0;  // swept moves (one primitive per cutting move)
   size_t tiles = 0;             // Embree primitives
   size_t boundEvaluations = 0;  // exact evaluations spent on building the bounds
   double buildSeconds = 0;
@@ -43,7 +43,7 @@ struct SceneStats {
 
 class SweptScene {
  public:
-  SweptScene(std::vector<SweptSegment> segments, const SceneOptions& options);
+  SweptScene(std::vector<SweptMove> segments, const SceneOptions& options);
   ~SweptScene();
   SweptScene(const SweptScene&) = delete;
   SweptScene& operator=(const SweptScene&) = delete;
@@ -107,7 +107,7 @@ class SweptScene {
                            uint32_t* hint = nullptr) const;
   double regionHalfSize() const { return regionHalfSize_; }
 
-  const std::vector<SweptSegment>& segments() const;
+  const std::vector<SweptMove>& segments() const;
   const SceneStats& stats() const;
 
   struct Impl;

@@ -15,10 +15,12 @@ namespace {
 // Heights of the cells [i0, i1) x [j0, j1), a square region of at most regionCells a
 // side, with one candidate search for the whole region:
 //  1. the exact height at the region's centre names a winning segment W;
-//  2. W's swept solid is convex, so over the rectangle of cell centres its heights are
-//     at most its largest corner value: no cell ends higher than U = that (or than its
-//     current height), so only segments that can go below U anywhere in the region
-//     can matter;
+//  2. W's heights are at most those of one convex solid inside W's swept solid (the
+//     whole solid for a constant axis; the cutter at the pose of the centre's answer
+//     for a turning move), and over the rectangle of cell centres a convex solid's
+//     heights are at most its largest corner value: no cell ends higher than U = that
+//     (or than its current height), so only moves that can go below U anywhere in the
+//     region can matter;
 //  3. one gathering ray collects those (each also gets the supporting plane of its
 //     solid below the centre), and each cell takes the exact minimum among them
 //     (lowestHeightAmong), which equals lowestHeight() cell by cell.
@@ -37,10 +39,16 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
   if (winner != UINT32_MAX) previousWinner = winner;
   double upper = ceiling;
   if (winner != UINT32_MAX) {
-    const SweptSegment& w = scene.segments()[winner];
+    const SweptMove& w = scene.segments()[winner];
+    double tCentre = 0;
+    if (w.turning()) {
+      tCentre = w.lowestPoint(0.5 * (x0 + x1), 0.5 * (y0 + y1)).t;
+      ++evals;
+    }
     double cornerMax = -HUGE_VAL;
     for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}}) {
-      const LowestPoint lp = w.lowestPoint(x, y);
+      const LowestPoint lp =
+          w.turning() ? w.stationaryLowestPoint(tCentre, x, y) : w.lowestPoint(x, y);
       ++evals;
       cornerMax = std::max(cornerMax, lp.hit ? lp.z : HUGE_VAL);
     }

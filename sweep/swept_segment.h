@@ -20,6 +20,9 @@ struct LowestPoint {
   // through (x, y, z) with this normal supports the solid from below, so it bounds
   // F from below everywhere: the scene uses it for conservative culling.
   Vec3 normal;
+  // The pose parameter in [0, 1] of a move at which the cutter reaches that point (set
+  // by turning moves, SweptMove; 0 otherwise).
+  double t = 0;
 };
 
 class SweptSegment;

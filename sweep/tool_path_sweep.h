@@ -1,23 +1,19 @@
-// From tool path to swept segments: drops rapids and splits moves whose axis turns
-// into constant-axis pieces (CONVENTIONS.md "Tool pose").
+// From tool path to swept moves: drops rapids, makes one SweptMove per cutting move
+// (whatever its axis does), and merges consecutive collinear moves with one axis
+// (CONVENTIONS.md "Tool pose").
 #pragma once
 
 #include <vector>
 
 #include "sweep/pose.h"
-#include "sweep/swept_segment.h"
+#include "sweep/swept_move.h"
 
 namespace scallop {
 
-struct SweepOptions {
-  // Bound on how far any point of the cutter (up to the flute top) can be from where
-  // the true rotating cutter puts it, mm. Sets the number of constant-axis pieces.
-  double axisTolerance = 1e-4;
-};
-
-// Every cutting move becomes one or more SweptSegments. Consecutive collinear moves
-// with the same axis are merged: the swept solid of their union is the same set.
-std::vector<SweptSegment> sweepToolPath(const Cutter& cutter, const ToolPath& path,
-                                        const SweepOptions& options = {});
+// Every cutting move becomes one SweptMove whose pose curve is tip linear, axis
+// slerp(from.axis, to.axis, t). Consecutive collinear moves with the same constant
+// axis are merged: the swept solid of their union is the same set. A turn of 180
+// degrees is an InputError naming the move.
+std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path);
 
 }  // namespace scallop

@@ -85,18 +85,18 @@ void BM_CutterLowestPoint(benchmark::State& state) {
 BENCHMARK(BM_CutterLowestPoint)->ArgsProduct({{0, 1, 2}, {0, 1}});
 
 // B1-like (one move per pass) and B2-like (0.05 mm moves) paths over a 4 x 4 mm stock.
-std::vector<SweptSegment> benchSegments(const std::string& name, BenchCase& b) {
+std::vector<SweptMove> benchSegments(const std::string& name, BenchCase& b) {
   BenchCaseOptions options;
   options.quick = true;
   options.area = 4;
   b = makeBenchCase(name, options);
-  return sweepToolPath(b.cutter, b.path, b.sweep);
+  return sweepToolPath(b.cutter, b.path);
 }
 
 void BM_SceneBuild(benchmark::State& state) {
   const char* name = state.range(0) == 1 ? "B1" : state.range(0) == 2 ? "B2" : "B3";
   BenchCase b;
-  const std::vector<SweptSegment> segments = benchSegments(name, b);
+  const std::vector<SweptMove> segments = benchSegments(name, b);
   SceneOptions options;
   options.stockTop = b.stock.max.z;
   for (auto _ : state) {
@@ -113,7 +113,7 @@ BENCHMARK(BM_SceneBuild)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 void BM_Cast(benchmark::State& state) {
   const char* name = state.range(0) == 1 ? "B1" : state.range(0) == 2 ? "B2" : "B3";
   BenchCase b;
-  const std::vector<SweptSegment> segments = benchSegments(name, b);
+  const std::vector<SweptMove> segments = benchSegments(name, b);
   SceneOptions options;
   options.stockTop = b.stock.max.z;
   const SweptScene scene(segments, options);

@@ -93,7 +93,6 @@ inline void fuzzSimulateCl(const std::string& bytes) {
   stock.extend({0, 0, -1});
   stock.extend({1.5, 1.5, 0});
   SimulationOptions options;
-  options.sweep.axisTolerance = 0.01;
   simulate(cutter, path, stock, gridCovering(0, 0, 1.5, 1.5, 0.25), options);
 }
 

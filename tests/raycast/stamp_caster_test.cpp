@@ -102,9 +102,9 @@ TEST(StampCaster, ResultDoesNotDependOnThreads) {
   options.tileCells = 8;  // several tiles, so both threads take some
   StampSimulationResult one, two;
   tbb::task_arena(1).execute(
-      [&] { one = simulateStamped(cutter, path, stock, grid, {}, options); });
+      [&] { one = simulateStamped(cutter, path, stock, grid, options); });
   tbb::task_arena(2).execute(
-      [&] { two = simulateStamped(cutter, path, stock, grid, {}, options); });
+      [&] { two = simulateStamped(cutter, path, stock, grid, options); });
   EXPECT_EQ(heightsHash(one.map), heightsHash(two.map));
   EXPECT_EQ(one.stamp.exactEvaluations, two.stamp.exactEvaluations);
 }

@@ -55,6 +55,23 @@ Fixture freeformFixture() {
   return f;
 }
 
+// The same surface as CAM writes it for a 5-axis machine: a tool axis at every CL point,
+// so the axis turns inside every move (one turning primitive per move).
+Fixture turningFixture() {
+  Fixture f;
+  f.stock.extend({0, 0, -3});
+  f.stock.extend({4, 3, 0});
+  auto pose = [](double x, double y) {
+    const Vec3 normal =
+        normalize(Vec3{-0.2 * std::cos(x) * std::cos(y), 0.2 * std::sin(x) * std::sin(y), 1});
+    return Pose{{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)}, normalize(normal + Vec3{0.08, 0, 0})};
+  };
+  for (double y = -0.5; y <= 3.5; y += 0.9)
+    for (int k = 0; k < 60; ++k)
+      f.path.moves.push_back(Move{pose(-3.5 + 0.18 * k, y), pose(-3.5 + 0.18 * (k + 1), y), false});
+  return f;
+}
+
 ZMap cast(const Fixture& f, double spacing, int64_t regionCells, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   const GridSpec grid =
@@ -65,7 +82,7 @@ ZMap cast(const Fixture& f, double spacing, int64_t regionCells, int threads) {
 }
 
 TEST(ZMapCaster, RegionQueriesEqualCellByCellBitForBit) {
-  for (const Fixture& f : {rasterFixture(), freeformFixture()}) {
+  for (const Fixture& f : {rasterFixture(), freeformFixture(), turningFixture()}) {
     const ZMap cellByCell = cast(f, 0.013, 1, 2);
     for (int64_t region : {4, 16, 33}) {
       const ZMap regions = cast(f, 0.013, region, 2);
@@ -78,26 +95,44 @@ TEST(ZMapCaster, RegionQueriesEqualCellByCellBitForBit) {
 }
 
 TEST(ZMapCaster, ThreadCountDoesNotChangeABit) {
-  const Fixture f = freeformFixture();
-  EXPECT_EQ(cast(f, 0.011, 16, 1).heights(), cast(f, 0.011, 16, 2).heights());
+  for (const Fixture& f : {freeformFixture(), turningFixture()})
+    EXPECT_EQ(cast(f, 0.011, 16, 1).heights(), cast(f, 0.011, 16, 2).heights());
+}
+
+// Bands of rows cast from one scene (a map too large to hold, --tiled) are the whole
+// map's rows, bit for bit.
+TEST(ZMapCaster, BandsEqualTheWholeMapBitForBit) {
+  const Fixture f = turningFixture();
+  const GridSpec grid = gridCovering(f.stock.min.x, f.stock.min.y, f.stock.max.x, f.stock.max.y, 0.017);
+  const std::unique_ptr<SweptScene> scene = buildScene(f.cutter, f.path, f.stock, grid.spacing);
+  ZMap whole(grid, f.stock.max.z);
+  castZMap(*scene, whole);
+  for (int64_t j0 = 0; j0 < grid.ny; j0 += 37) {
+    const int64_t j1 = std::min(grid.ny, j0 + 37);
+    ZMap band(grid.rows(j0, j1), f.stock.max.z);
+    castZMap(*scene, band);
+    for (int64_t j = j0; j < j1; ++j)
+      for (int64_t i = 0; i < grid.nx; ++i) ASSERT_EQ(band.at(i, j - j0), whole.at(i, j)) << i << " " << j;
+  }
 }
 
 TEST(ZMapCaster, EveryCellIsTheMinimumOverAllSegments) {
   // Against the definition with no culling at all: each cell's height is the minimum of
   // the stock top and every swept segment's exact lowest point.
-  const Fixture f = freeformFixture();
+  for (const Fixture& f : {freeformFixture(), turningFixture()}) {
   const ZMap map = cast(f, 0.05, 16, 2);
-  const std::vector<SweptSegment> segs = sweepToolPath(f.cutter, f.path);
+  const std::vector<SweptMove> segs = sweepToolPath(f.cutter, f.path);
   const GridSpec& g = map.grid();
   for (int64_t j = 0; j < g.ny; j += 3) {
     for (int64_t i = 0; i < g.nx; i += 3) {
       double want = f.stock.max.z;
-      for (const SweptSegment& s : segs) {
+      for (const SweptMove& s : segs) {
         const LowestPoint lp = s.lowestPoint(g.cellCentreX(i), g.cellCentreY(j));
         if (lp.hit) want = std::min(want, lp.z);
       }
       ASSERT_EQ(map.at(i, j), want) << i << " " << j;
     }
+  }
   }
 }
 

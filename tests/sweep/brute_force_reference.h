@@ -20,6 +20,9 @@
 //     golden-section resolution, which is far below 1e-9 mm).
 #pragma once
 
+#include <cmath>
+#include <functional>
+#include <utility>
 #include <vector>
 
 #include "sweep/cutter.h"
@@ -53,8 +56,76 @@ struct RefHit {
   double z = 0;  // mm, valid when hit
 };
 
+// Golden-section search for the maximum of a concave (unimodal) f on [a, b]. Returns
+// the best (argument, value) over every point evaluated, endpoints included, so the
+// value is always one that f really takes.
+template <class F>
+std::pair<double, double> goldenMax(F&& f, double a, double b) {
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  std::pair<double, double> best{a, f(a)};
+  auto consider = [&](double x, double fx) {
+    if (fx > best.second) best = {x, fx};
+  };
+  consider(b, f(b));
+  double x1 = b - g * (b - a), x2 = a + g * (b - a);
+  double f1 = f(x1), f2 = f(x2);
+  consider(x1, f1);
+  consider(x2, f2);
+  // 200 steps shrink any interval by 1e-41: the loop always ends on the resolution
+  // test, when the probes stop being distinct doubles.
+  for (int i = 0; i < 200 && b - a > 1e-15 * (1 + std::fabs(a) + std::fabs(b)); ++i) {
+    if (f1 >= f2) {
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - g * (b - a);
+      f1 = f(x1);
+      consider(x1, f1);
+    } else {
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + g * (b - a);
+      f2 = f(x2);
+      consider(x2, f2);
+    }
+  }
+  return best;
+}
+
+// Bisection of a predicate that is true at `in` and false at `out` (an interval's end):
+// returns the last point known to satisfy it, to the last representable double.
 // Lowest point of the stationary cutter (tip at `tip`) on the vertical line (x, y).
 RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y);
+
+// The deepest penetration of the vertical line (x, y) into the stationary cutter (mm,
+// negative: the line misses it by that much in the sense of the profile).
+double deepestDepth(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y);
+
+// Slerp as CONVENTIONS.md writes it ("Tool pose"): sin((1 - t) phi) a0 + sin(t phi) a1
+// over sin(phi), for unit a0, a1 (a0 where they coincide).
+inline Vec3 slerp(const Vec3& a0, const Vec3& a1, double t) {
+  const double phi = std::acos(std::fmax(-1.0, std::fmin(1.0, dot(a0, a1))));
+  if (phi < 1e-12) return a0;
+  return (a0 * std::sin((1 - t) * phi) + a1 * std::sin(t * phi)) / std::sin(phi);
+}
+
+// A pose curve as the reference sees it: tip straight from p0 to p1, the axis any
+// function of t (the tests write slerp and the machines' formulas from CONVENTIONS.md
+// themselves).
+struct RefCurve {
+  Vec3 p0, p1;
+  std::function<Vec3(double)> axis;
+};
+
+// Lowest point on the vertical line (x, y) of the solid swept along a curve whose axis
+// turns: f(t) = stationaryLowest at pose(t) on `samples` evenly spaced t, then
+// golden-section refinement around the three lowest local minima of the grid (every
+// value is a real height, so the reference errs only upwards). `maxDepth`, if given,
+// receives the deepest penetration seen (a line that grazes the solid has it near 0:
+// hit or miss is then a matter of resolution).
+RefHit turningLowest(const RefCutter& c, const RefCurve& curve, double x, double y,
+                     int samples = 401, double* maxDepth = nullptr);
 
 // Lowest point on the vertical line (x, y) of the solid swept by the cutter whose tip
 // moves straight from `start` to `end` with the fixed unit axis `axis`.

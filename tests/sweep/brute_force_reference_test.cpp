@@ -21,45 +21,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Golden-section search for the maximum of a concave (unimodal) f on [a, b]. Returns
-// the best (argument, value) over every point evaluated, endpoints included, so the
-// value is always one that f really takes.
-template <class F>
-std::pair<double, double> goldenMax(F&& f, double a, double b) {
-  const double g = (std::sqrt(5.0) - 1) / 2;
-  std::pair<double, double> best{a, f(a)};
-  auto consider = [&](double x, double fx) {
-    if (fx > best.second) best = {x, fx};
-  };
-  consider(b, f(b));
-  double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  double f1 = f(x1), f2 = f(x2);
-  consider(x1, f1);
-  consider(x2, f2);
-  // 200 steps shrink any interval by 1e-41: the loop always ends on the resolution
-  // test, when the probes stop being distinct doubles.
-  for (int i = 0; i < 200 && b - a > 1e-15 * (1 + std::fabs(a) + std::fabs(b)); ++i) {
-    if (f1 >= f2) {
-      b = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = b - g * (b - a);
-      f1 = f(x1);
-      consider(x1, f1);
-    } else {
-      a = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = a + g * (b - a);
-      f2 = f(x2);
-      consider(x2, f2);
-    }
-  }
-  return best;
-}
-
-// Bisection of a predicate that is true at `in` and false at `out` (an interval's end):
-// returns the last point known to satisfy it, to the last representable double.
 template <class P>
 double bisect(P&& pred, double in, double out) {
   for (int i = 0; i < 400; ++i) {
@@ -154,6 +115,10 @@ bool inside(const RefCutter& c, const Vec3& tip, const Vec3& axis, const Vec3& p
   if (s < -tol || s > c.L + tol) return false;
   const double rho = length(q - axis * s);
   return rho <= profile(c, std::min(std::max(s, 0.0), c.L)) + tol;
+}
+
+double deepestDepth(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y) {
+  return deepest(c, tip, axis, x, y).depth;
 }
 
 RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y) {

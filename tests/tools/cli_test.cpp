@@ -134,7 +134,7 @@ TEST_F(Cli, SimulateWritesEveryOutputAndTheReportDescribesThem) {
   EXPECT_EQ(report["grid"]["nx"], 40);
   EXPECT_EQ(report["grid"]["ny"], 60);
   EXPECT_EQ(report["inputs"]["tool"]["type"], "bull");
-  EXPECT_EQ(report["sweep"]["axis_tolerance_mm"], 1e-4);
+  EXPECT_EQ(report["sweep"]["cutting_moves"], report["sweep"]["swept_segments"]);
   EXPECT_EQ(slurp(out / "keep.txt"), "mine");
   for (const char* f : {"heights.exr", "heights.gsf", "preview.png", "report.json"})
     EXPECT_TRUE(fs::exists(out / f)) << f;

@@ -108,7 +108,7 @@ void checkPath(const std::string& file, const Cutter& cutter, double spacing) {
       areas.push_back(b);
     }
   }
-  const MoveFinder finder(cutter, path.path, {}, areas);
+  const MoveFinder finder(cutter, path.path, areas);
   std::vector<std::vector<size_t>> makers(gougeCells.size());
   std::vector<char> offending(path.path.moves.size(), 0);
   tbb::parallel_for(size_t(0), gougeCells.size(), [&](size_t n) {

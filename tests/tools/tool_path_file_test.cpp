@@ -27,7 +27,6 @@ class PathFile : public test::CliFixture {
   std::vector<double> heights(const fs::path& jobFile) {
     const Job job = loadJobFile(jobFile.string());
     SimulationOptions options;
-    options.sweep.axisTolerance = job.axisTolerance;
     return simulate(job.cutter, job.path, job.stock, job.grid(), options).map.heights();
   }
 };

@@ -77,7 +77,6 @@ int runGouge(GougeArgs a) {
     requirePositive(so.vertexTestLength, "--test-length", "the vertex test length (mm)");
   requirePositive(so.gougeTolerance, "--tolerance", "the gouge tolerance (mm)");
   requirePositive(a.mapTolerance, "--map-tolerance", "the gouge map tolerance (mm)");
-  requirePositive(a.axisTolerance, "--axis-tolerance", "the axis interpolation tolerance (mm)");
   if (a.gridSpacing != 0) requirePositive(a.gridSpacing, "--grid-spacing", "the grid spacing (mm)");
   if (!a.outDir.empty()) ensureWritableDirectory(a.outDir);
   const Cutter cutter = Cutter::make(CutterType::Flat, a.radius, 0, a.length, "tool");
@@ -112,7 +111,6 @@ int runGouge(GougeArgs a) {
     const GridSpec grid = gridCovering(box.min.x, box.min.y, box.max.x, box.max.y, spacing);
     GougeMapOptions mo;
     mo.tolerance = a.mapTolerance;
-    mo.sweep.axisTolerance = a.axisTolerance;
     gm = gougeMap(index, cutter, r.path, grid, mo);
     mapSeconds = secondsSince(tMap);
     const GougeMapStats& g = gm.stats;
@@ -123,7 +121,6 @@ int runGouge(GougeArgs a) {
                  {"nx", grid.nx},
                  {"ny", grid.ny}}},
                {"tolerance", a.mapTolerance},
-               {"axis_tolerance", a.axisTolerance},
                {"swept_segments", g.sweptSegments},
                {"design_cells", g.designCells},
                {"untouched_cells", g.untouchedCells},
@@ -298,9 +295,6 @@ Command addGougeCommand(CLI::App& parent, CommonOptions& common) {
       ->capture_default_str();
   app->add_option("--grid-spacing", a->gridSpacing,
                   "Gouge map cell size, mm (default: longest side / 300)");
-  app->add_option("--axis-tolerance", a->axisTolerance,
-                  "Sweep tolerance of moves that turn the axis, mm")
-      ->capture_default_str();
   app->add_flag("--no-map", a->noMap, "Skip the ray-cast gouge map");
   app->add_option(
          "--normals", a->normals,

@@ -19,7 +19,6 @@ struct GougeArgs {
   std::string normals = "up";   // up | file
   double mapTolerance = 1e-2;   // mm
   double gridSpacing = 0;       // mm; <= 0: longest side / 300
-  double axisTolerance = 2e-3;  // mm, sweep of moves that turn the axis (< mapTolerance)
   bool noMap = false;
   std::string posturesCsv;  // optional
   std::string outDir;       // optional

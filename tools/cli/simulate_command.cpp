@@ -91,7 +91,7 @@ constexpr const char* kSimulateHelp =
     "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
     "Job file keys: tool{type,radius,corner_radius,flute_length}, stock{min,max},\n"
     "grid{spacing}, path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,\n"
-    "segment_length} | file}, sweep{axis_tolerance},\n"
+    "segment_length} | file},\n"
     "design{stl, gouge_tolerance (mm, default 0.001)}: adds machined - design statistics,\n"
     "gouges with the moves (file lines) that made them, and DIR/deviation.png.\n"
     "Path files by extension: .cl .apt .cls (APT CL data: GOTO, CUTTER, RAPID, ...),\n"

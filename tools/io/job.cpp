@@ -219,7 +219,14 @@ Job parseJob(const std::string& textIn, const std::string& source,
   if (!doc.is_object()) throw InputError(source, "expected a JSON object at the top level");
 
   try {
-    rejectUnknownKeys(doc, {"tool", "stock", "grid", "path", "sweep", "design"}, "");
+    // "sweep": {"axis_tolerance"} cut turning moves into constant-axis pieces before
+    // they were swept exactly; a job that still sets it is told so rather than
+    // silently given a different meaning.
+    if (doc.contains("sweep"))
+      throw InputError("sweep.axis_tolerance",
+                       "is no longer used: moves whose axis turns are swept exactly, with no "
+                       "tolerance; remove \"sweep\" from the job");
+    rejectUnknownKeys(doc, {"tool", "stock", "grid", "path", "design"}, "");
     Job job;
     job.source = source;
     // Without "tool" the path file's CUTTER/ statement defines it (below).
@@ -248,13 +255,6 @@ Job parseJob(const std::string& textIn, const std::string& source,
     const double nx = std::ceil((job.stock.max.x - job.stock.min.x) / job.spacing);
     const double ny = std::ceil((job.stock.max.y - job.stock.min.y) / job.spacing);
     if (nx * ny > 9e15) throw InputError("grid.spacing", "gives more cells than can be counted");
-
-    if (doc.contains("sweep")) {
-      const json& sweep = requireObject(doc, "sweep", "sweep");
-      rejectUnknownKeys(sweep, {"axis_tolerance"}, "sweep");
-      job.axisTolerance = number(sweep, "axis_tolerance", "sweep.axis_tolerance");
-      if (job.axisTolerance <= 0) throw InputError("sweep.axis_tolerance", "must be > 0 mm");
-    }
 
     if (doc.contains("design")) {
       const json& design = requireObject(doc, "design", "design");
@@ -302,8 +302,7 @@ json jobToJson(const Job& job) {
               {"stock",
                {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
                 {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}}},
-              {"grid", {{"spacing", job.spacing}}},
-              {"sweep", {{"axis_tolerance", job.axisTolerance}}}};
+              {"grid", {{"spacing", job.spacing}}}};
   if (job.isRaster) {
     const RasterSpec& r = job.raster;
     out["path"] = {{"raster",

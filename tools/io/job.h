@@ -26,7 +26,6 @@ struct Job {
   Cutter cutter;
   Box3 stock;
   double spacing = 0;           // grid cell side, mm
-  double axisTolerance = 1e-4;  // mm, see SweepOptions
   bool isRaster = false;
   RasterSpec raster;     // when isRaster
   std::string pathFile;  // when not: the tool-path file, resolved to a path

@@ -56,6 +56,13 @@ Vec3 fileAxis(const Vec3& axis, const std::string& where) {
   const double len = length(axis);
   if (!(len >= 1e-9) || !std::isfinite(len))
     throw InputError(where, "the tool axis (i j k) must be a non-zero vector");
+  // A z-map holds the lowest point of the cut seen from above; a cutter whose shank
+  // points downwards cuts from below, which no height map can show.
+  if (axis.z < 0)
+    throw InputError(where, "the tool axis (i j k) points below the horizontal (k = " +
+                                std::to_string(axis.z / len) +
+                                "): a height map seen from above cannot show what it cuts; "
+                                "scallop needs k >= 0");
   return std::fabs(len - 1) <= 1e-12 ? axis : axis / len;
 }
 

@@ -8,6 +8,7 @@
 #include "sweep/input_error.h"
 #include "sweep/raster.h"
 #include "sweep/swept_segment.h"
+#include "tools/io/tool_path_file.h"
 
 namespace scallop {
 
@@ -27,7 +28,7 @@ RasterSpec b1Raster() {
 }  // namespace
 
 const std::vector<std::string>& benchCaseNames() {
-  static const std::vector<std::string> names{"B1", "B2", "B3"};
+  static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4"};
   return names;
 }
 
@@ -35,38 +36,69 @@ double freeformHeight(double x, double y) {
   return 0.5 * std::sin(2 * kPi * x / 10) * std::cos(2 * kPi * y / 14);
 }
 
+namespace {
+
+// The freeform paths' shared geometry: tips on the surface, the leaned normal as axis,
+// passes and CL points as freeformClText's comment says.
+struct FreeformPasses {
+  double x0, x1;  // feed range, mm
+  int points;     // CL points per pass (moves + 1)
+  std::vector<double> ys;
+  Vec3 tip(double x, double y) const { return {x, y, freeformHeight(x, y)}; }
+  double x(int i) const { return x0 + (x1 - x0) * double(i) / double(points - 1); }
+};
+
+FreeformPasses freeformPasses(const Cutter& cutter, const Box3& stock, double passGap,
+                              double pointGap) {
+  FreeformPasses p;
+  p.x0 = stock.min.x - cutter.radius - 1, p.x1 = stock.max.x + cutter.radius + 1;
+  p.points = std::max(1, int(std::ceil((p.x1 - p.x0) / pointGap - 1e-9))) + 1;
+  const int passes = int(std::floor((stock.max.y - stock.min.y) / passGap + 1e-9)) + 1;
+  for (int k = 0; k < passes; ++k) p.ys.push_back(stock.min.y + k * passGap);
+  return p;
+}
+
+Vec3 leanedNormal(double x, double y, double leanDeg) {
+  const double lean = leanDeg * kPi / 180;
+  // Unit normal of z = f(x, y): (-f_x, -f_y, 1) normalised.
+  const double fx = 0.5 * (2 * kPi / 10) * std::cos(2 * kPi * x / 10) * std::cos(2 * kPi * y / 14);
+  const double fy = -0.5 * (2 * kPi / 14) * std::sin(2 * kPi * x / 10) * std::sin(2 * kPi * y / 14);
+  const Vec3 n = normalize(Vec3{-fx, -fy, 1});
+  const Vec3 feed{1, 0, 0};
+  const Vec3 along = normalize(feed - n * dot(feed, n));  // the feed, in the tangent plane
+  return normalize(n * std::cos(lean) + along * std::sin(lean));
+}
+
+}  // namespace
+
+std::string freeformClText(const Cutter& cutter, const Box3& stock, double passGap,
+                           double pointGap, double leanDeg) {
+  const FreeformPasses p = freeformPasses(cutter, stock, passGap, pointGap);
+  std::string text = "# scallop bench B3: freeform 5-axis finish, x y z i j k per CL point\n";
+  char line[160];
+  for (double y : p.ys) {
+    for (int i = 0; i < p.points; ++i) {
+      const Vec3 tip = p.tip(p.x(i), y), a = leanedNormal(p.x(i), y, leanDeg);
+      std::snprintf(line, sizeof line, "%.6f %.6f %.6f %.9f %.9f %.9f\n", tip.x, tip.y, tip.z,
+                    a.x, a.y, a.z);
+      text += line;
+    }
+    text += "\n";  // a pass break: the link to the next pass is a rapid
+  }
+  return text;
+}
+
 ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGap,
                           double moveLength, double leanDeg) {
-  const double lean = leanDeg * kPi / 180;
-  const Vec3 feed{1, 0, 0};
-  // Unit normal of z = f(x, y): (-f_x, -f_y, 1) normalised.
-  auto normal = [](double x, double y) {
-    const double fx =
-        0.5 * (2 * kPi / 10) * std::cos(2 * kPi * x / 10) * std::cos(2 * kPi * y / 14);
-    const double fy =
-        -0.5 * (2 * kPi / 14) * std::sin(2 * kPi * x / 10) * std::sin(2 * kPi * y / 14);
-    return normalize(Vec3{-fx, -fy, 1});
-  };
-  auto leanedAxis = [&](double x, double y) {
-    const Vec3 n = normal(x, y);
-    const Vec3 along = normalize(feed - n * dot(feed, n));  // the feed, in the tangent plane
-    return normalize(n * std::cos(lean) + along * std::sin(lean));
-  };
-  auto tipAt = [](double x, double y) { return Vec3{x, y, freeformHeight(x, y)}; };
-
-  const double x0 = stock.min.x - cutter.radius - 1, x1 = stock.max.x + cutter.radius + 1;
-  const int moves = std::max(1, int(std::ceil((x1 - x0) / moveLength - 1e-9)));
-  const int passes = int(std::floor((stock.max.y - stock.min.y) / passGap + 1e-9)) + 1;
+  const FreeformPasses p = freeformPasses(cutter, stock, passGap, moveLength);
   ToolPath path;
-  for (int k = 0; k < passes; ++k) {
-    const double y = stock.min.y + k * passGap;
-    for (int i = 0; i < moves; ++i) {
-      const double xa = x0 + (x1 - x0) * double(i) / moves;
-      const double xb = x0 + (x1 - x0) * double(i + 1) / moves;
-      const Vec3 axis = leanedAxis(0.5 * (xa + xb), y);
+  for (double y : p.ys) {
+    for (int i = 0; i + 1 < p.points; ++i) {
+      const double xa = p.x(i), xb = p.x(i + 1);
+      const Vec3 axis = leanedNormal(0.5 * (xa + xb), y, leanDeg);
       Move mv;
-      mv.from = {tipAt(xa, y), axis};
-      mv.to = {tipAt(xb, y), axis};
+      mv.from = {p.tip(xa, y), axis};
+      mv.to = {p.tip(xb, y), axis};
       if (i == 0 && !path.moves.empty()) {  // rapid from the previous pass, not simulated
         Move rapid;
         rapid.from = path.moves.back().to;
@@ -100,16 +132,35 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
     b.description = name == "B1"
                         ? "raster, bull R3 r1, lead 5 deg, step-over 0.8 mm, one move per pass"
                         : "B1 with every pass cut into 0.05 mm moves (CAM-like)";
-  } else if (name == "B3") {
+  } else if (name == "B3" || name == "B3c") {
     // The surface spans z in [-0.5, 0.5]; a stock top at 0.6 mm is cut everywhere.
     b.stock.extend({0, 0, -2});
     b.stock.extend({side, side, 0.6});
-    b.path = makeFreeformPath(b.cutter, b.stock, 0.5, 0.05, 5);
+    if (name == "B3") {
+      b.path = parseToolPath(freeformClText(b.cutter, b.stock, 0.5, 0.05, 5), "B3 CL text");
+      b.description = "freeform 5-axis CL text, axis at every point turning inside each move";
+    } else {
+      b.path = makeFreeformPath(b.cutter, b.stock, 0.5, 0.05, 5);
+      b.description = "B3's tips with one constant axis per move (the axis jumps between moves)";
+    }
     b.grid = gridCovering(0, 0, side, side, 0.002 * coarse);
-    b.description =
-        "freeform 5-axis, tip on z = 0.5 sin(2 pi x/10) cos(2 pi y/14), axis = normal leaned 5 deg";
+  } else if (name == "B4") {
+    // OpenCAMLib's drop-cutter raster over the mount_rush relief (tests/data/mount_rush/
+    // README.md), over its own stock as examples/mount_rush_ball.json has it.
+    const std::string file = std::string(SCALLOP_DATA_DIR) + "/mount_rush/ball_raster.cl.txt";
+    b.cutter = Cutter::make(CutterType::Ball, 3);
+    b.path = readToolPathFile(file).path;
+    b.stock.extend({-41, -25, -27});
+    b.stock.extend({45, 18.5, 2});
+    if (options.area > 0) {  // a square of that side at the relief's centre
+      b.stock.min = {2 - 0.5 * side, -3.25 - 0.5 * side, -27};
+      b.stock.max = {2 + 0.5 * side, -3.25 + 0.5 * side, 2};
+    }
+    b.grid = gridCovering(b.stock.min.x, b.stock.min.y, b.stock.max.x, b.stock.max.y,
+                          0.01 * coarse);
+    b.description = "mount_rush ball R3 drop-cutter raster (OpenCAMLib), 3-axis CAM output";
   } else {
-    throw InputError("--case", "unknown case \"" + name + "\"; expected B1, B2 or B3");
+    throw InputError("--case", "unknown case \"" + name + "\"; expected B1, B2, B3, B3c or B4");
   }
   return b;
 }

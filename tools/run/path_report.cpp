@@ -23,11 +23,11 @@ json pathFileReport(const Job& job, bool quiet) {
   return {{"format", job.pathFormat}, {"warnings", w.kept}, {"warnings_total", w.total}};
 }
 
-json designReport(const Job& job, const ZMap& map, const SweepOptions& sweep,
+json designReport(const Job& job, const ZMap& map,
                   const std::string& outDir, bool quiet) {
   const MeshIndex index(*job.design);
   DesignComparison c = compareWithDesign(map, index, job.gougeTolerance);
-  attributeGouges(c, map, job.cutter, job.path, sweep);
+  attributeGouges(c, map, job.cutter, job.path);
   const std::string png = (std::filesystem::path(outDir) / "deviation.png").string();
   const double limit = writeDeviationPng(
       c, png, "machined - design: " + std::filesystem::path(job.designFile).filename().string());

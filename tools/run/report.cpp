@@ -51,7 +51,6 @@ json simulationReport(const RunRecord& run) {
   if (run.method == "stamp") r["stamp_step_mm"] = run.stampStepMm;
   r["sweep"] = {{"cutting_moves", run.cuttingMoves},
                 {"swept_segments", run.sweptSegments},
-                {"axis_tolerance_mm", run.axisToleranceMm},
                 {"culling_tiles", run.cullingTiles}};
   r["timings_s"] = {{"scene_build", run.sceneSeconds},
                     {"cast", run.castSeconds},

@@ -33,7 +33,6 @@ struct RunRecord {
   std::string method = "exact";  // or "stamp", with its step
   double stampStepMm = 0;
   int64_t cuttingMoves = 0, sweptSegments = 0, cullingTiles = 0;
-  double axisToleranceMm = 0;
   int requestedThreads = 0;
   // Timings, s.
   double sceneSeconds = 0, castSeconds = 0, writeSeconds = 0, totalSeconds = 0;

@@ -35,7 +35,6 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
                  job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing);
 
   SimulationOptions options;
-  options.sweep.axisTolerance = job.axisTolerance;
   options.cast.progress = settings.progress;
   SimulationResult sim;
   double stampStep = 0;  // mm, --method stamp only
@@ -44,7 +43,7 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
     StampOptions stamp;
     stamp.progress = options.cast.progress;
     StampSimulationResult st =
-        simulateStamped(job.cutter, job.path, job.stock, grid, options.sweep, stamp);
+        simulateStamped(job.cutter, job.path, job.stock, grid, stamp);
     sim.map = std::move(st.map);
     sim.scene.segments = st.segments;
     sim.cast.cells = st.stamp.cells;
@@ -69,7 +68,7 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
 
   RunRecord run;
   run.design = job.design
-                   ? designReport(job, sim.map, options.sweep, settings.outDir, settings.quiet)
+                   ? designReport(job, sim.map, settings.outDir, settings.quiet)
                    : json();
   run.writeSeconds = secondsSince(tWrite);
   run.jobSource = job.source;
@@ -80,7 +79,6 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
   run.cuttingMoves = int64_t(job.path.cuttingMoves());
   run.sweptSegments = int64_t(sim.scene.segments);
   run.cullingTiles = int64_t(sim.scene.tiles);
-  run.axisToleranceMm = job.axisTolerance;
   run.requestedThreads = settings.threads;
   run.sceneSeconds = sim.scene.buildSeconds;
   run.castSeconds = sim.cast.seconds;

@@ -125,7 +125,6 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
                  (long long)layout.bandRows);
 
   SimulationOptions options;
-  options.sweep.axisTolerance = job.axisTolerance;
   const std::unique_ptr<SweptScene> scene =
       buildScene(job.cutter, job.path, job.stock, grid.spacing, options);
   const SceneStats sceneStats = scene->stats();
@@ -140,8 +139,7 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
                     {"exr_tile_rows", layout.tileHeight},
                     {"cutting_moves", job.path.cuttingMoves()},
                     {"swept_segments", sceneStats.segments},
-                    {"culling_tiles", sceneStats.tiles},
-                    {"axis_tolerance_mm", job.axisTolerance}};
+                    {"culling_tiles", sceneStats.tiles}};
   std::unique_ptr<TiledOutput> output;
   if (!partial) {
     output = std::make_unique<TiledOutput>(run, settings.outDir);
@@ -253,7 +251,6 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   record.cuttingMoves = run_.at("cutting_moves").get<int64_t>();
   record.sweptSegments = run_.at("swept_segments").get<int64_t>();
   record.cullingTiles = run_.at("culling_tiles").get<int64_t>();
-  record.axisToleranceMm = run_.at("axis_tolerance_mm").get<double>();
   record.requestedThreads = threads;
   record.sceneSeconds = sceneSeconds;
   record.castSeconds = castSeconds_;

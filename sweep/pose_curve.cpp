@@ -1,0 +1,117 @@
+#include "sweep/pose_curve.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sweep/input_error.h"
+
+namespace scallop {
+
+namespace {
+
+// Turns smaller than this (rad) are treated as none: no cutter point then strays by
+// more than reach * 1e-12 mm from the constant-axis solid.
+constexpr double kNoTurn = 1e-12;
+
+Vec3 tableAxis(RotaryKinematics kin, double tilt, double spin) {
+  const double st = std::sin(tilt), ct = std::cos(tilt);
+  if (kin == RotaryKinematics::TableBC) return {-std::cos(spin) * st, std::sin(spin) * st, ct};
+  return {std::sin(spin) * st, std::cos(spin) * st, ct};
+}
+
+// Rotations of v about the coordinate axes by `angle` (right-handed).
+Vec3 rotX(const Vec3& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
+}
+Vec3 rotY(const Vec3& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+}
+Vec3 rotZ(const Vec3& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
+}
+
+}  // namespace
+
+PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where) {
+  PoseCurve c;
+  c.kind_ = Kind::Slerp;
+  c.tip0_ = from.tip;
+  c.tip1_ = to.tip;
+  const Vec3 a0 = normalize(from.axis), a1 = normalize(to.axis);
+  c.u_ = a0;
+  c.a1_ = a1;
+  // The angle from atan2 of the cross and dot products is accurate for small and for
+  // near-straight turns alike (acos loses half the digits near 0 and pi).
+  const double phi = std::atan2(length(cross(a0, a1)), dot(a0, a1));
+  if (phi > 3.14159265358979323846 - 1e-9)
+    throw InputError(where, "the axis turns by 180 degrees; the rotation is undefined");
+  if (phi <= kNoTurn) {
+    c.a1_ = a0;  // one axis for the whole move
+    return c;
+  }
+  c.phi_ = phi;
+  c.v_ = normalize(a1 - a0 * dot(a0, a1));
+  c.omega_ = phi;
+  return c;
+}
+
+PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& tip1,
+                            double tilt0, double tilt1, double spin0, double spin1) {
+  PoseCurve c;
+  c.kind_ = kin == RotaryKinematics::TableBC ? Kind::TableBC : Kind::TableAC;
+  c.tip0_ = tip0;
+  c.tip1_ = tip1;
+  c.tilt0_ = tilt0, c.dTilt_ = tilt1 - tilt0;
+  c.spin0_ = spin0, c.dSpin_ = spin1 - spin0;
+  c.u_ = tableAxis(kin, tilt0, spin0);
+  c.a1_ = tableAxis(kin, tilt1, spin1);
+  c.omega_ = std::fabs(c.dTilt_) + std::fabs(c.dSpin_);
+  if (c.omega_ <= kNoTurn) c.omega_ = 0, c.a1_ = c.u_;
+  return c;
+}
+
+Vec3 PoseCurve::tip(double t) const {
+  if (t >= 1) return tip1_;
+  return tip0_ + (tip1_ - tip0_) * t;
+}
+
+Vec3 PoseCurve::axis(double t) const {
+  if (omega_ == 0 || t <= 0) return u_;
+  if (t >= 1) return a1_;
+  if (kind_ == Kind::Slerp) return u_ * std::cos(phi_ * t) + v_ * std::sin(phi_ * t);
+  const RotaryKinematics kin =
+      kind_ == Kind::TableBC ? RotaryKinematics::TableBC : RotaryKinematics::TableAC;
+  return tableAxis(kin, tilt0_ + dTilt_ * t, spin0_ + dSpin_ * t);
+}
+
+Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
+  if (omega_ == 0 || ta == tb) return v;
+  if (kind_ == Kind::Slerp) {
+    // Rodrigues' formula about w = u x v (unit: u_ and v_ are orthonormal).
+    const Vec3 w = cross(u_, v_);
+    const double angle = phi_ * (tb - ta), c = std::cos(angle), s = std::sin(angle);
+    return v * c + cross(w, v) * s + w * (dot(w, v) * (1 - c));
+  }
+  // The cutter's rotation is R(t) = Rz(-C) Ry(-B) (xyzbc-trt) or Rz(-C) Rx(-A)
+  // (xyzac-trt), mapping +Z to axis(t): undo it at ta, apply it at tb.
+  const double tiltA = tilt0_ + dTilt_ * ta, spinA = spin0_ + dSpin_ * ta;
+  const double tiltB = tilt0_ + dTilt_ * tb, spinB = spin0_ + dSpin_ * tb;
+  if (kind_ == Kind::TableBC) return rotZ(rotY(rotY(rotZ(v, spinA), tiltA), -tiltB), -spinB);
+  return rotZ(rotX(rotX(rotZ(v, spinA), tiltA), -tiltB), -spinB);
+}
+
+Vec3 PoseCurve::axisRate(double t) const {
+  if (omega_ == 0) return {};
+  t = std::clamp(t, 0.0, 1.0);
+  if (kind_ == Kind::Slerp) return (v_ * std::cos(phi_ * t) - u_ * std::sin(phi_ * t)) * phi_;
+  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
+  const double st = std::sin(tilt), ct = std::cos(tilt), ss = std::sin(spin), cs = std::cos(spin);
+  if (kind_ == Kind::TableBC)
+    return Vec3{-cs * ct, ss * ct, -st} * dTilt_ + Vec3{ss * st, cs * st, 0} * dSpin_;
+  return Vec3{ss * ct, cs * ct, -st} * dTilt_ + Vec3{cs * st, -ss * st, 0} * dSpin_;
+}
+
+}  // namespace scallop

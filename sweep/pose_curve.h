@@ -1,0 +1,71 @@
+// PoseCurve: where the cutter is at each instant t in [0, 1] of one move
+// (CONVENTIONS.md "Tool pose", "Machines").
+//
+// Every curve has a tip moving linearly, tip(t) = p0 + t (p1 - p0), and a tool axis that
+// turns as a rigid rotation R(t) of the cutter about its tip: axis(t) = R(t) axis_body.
+// What the swept-solid kernel (swept_move.cpp) needs of a curve, besides pose(t), is one
+// number: the turn rate omega (rad per unit t), a bound such that every point k of the
+// cutter (tip at the origin) satisfies
+//     |d/dt R(t) k| <= omega |k|     and     |d^2/dt^2 R(t) k| <= omega^2 |k|.
+// The kinds:
+//   * Slerp (CL data): the great circle from a0 to a1 at constant angular speed phi
+//     (the angle between them), a rotation about the fixed axis w = a0 x a1 / |.|:
+//     R'k = phi w x Rk, R''k = -phi^2 (the part of Rk across w): omega = phi.
+//   * Rotary (5-axis machines with TCP on): two rotary angles, each linear in t, the
+//     axis a product of two rotations R = A(theta1(t)) B(theta2(t)) at constant rates
+//     w1, w2: R' = A'B + AB', R'' = A''B + 2A'B' + AB'', so omega = |w1| + |w2|.
+//     Kinematics xyzbc-trt (axis = (-cos C sin B, sin C sin B, cos B)) and xyzac-trt
+//     (axis = (sin C sin A, cos C sin A, cos A)), as LinuxCNC's trtfuncs define them.
+// A new machine curve is a new kind with its own axis(t) and omega; the kernel is
+// unchanged. (A curve whose tip is not linear, joint-linear motion with TCP off, would
+// add a bound on |tip''| to the same place: swept_move.cpp's chord bound.)
+#pragma once
+
+#include "sweep/pose.h"
+#include "sweep/vec3.h"
+
+namespace scallop {
+
+enum class RotaryKinematics { TableBC, TableAC };  // xyzbc-trt, xyzac-trt
+
+class PoseCurve {
+ public:
+  // CL data: tip linear, axis = slerp(a0, a1, t). Axes are normalised here. Throws
+  // InputError (where = `where`) for a turn of 180 degrees, whose great circle is
+  // undefined.
+  static PoseCurve linear(const Pose& from, const Pose& to, const char* where = "path move");
+  // A table-table machine with TCP on: tip linear, rotary angles (radians) linear in t.
+  static PoseCurve rotary(RotaryKinematics kinematics, const Vec3& tip0, const Vec3& tip1,
+                          double tilt0, double tilt1, double spin0, double spin1);
+
+  Vec3 tip(double t) const;
+  Vec3 axis(double t) const;
+  // d axis / dt: with the tip velocity it gives the velocity of every cutter point,
+  // v = (p1 - p0) + (axis x axis') x (p - tip), which the kernel uses only to guess.
+  Vec3 axisRate(double t) const;
+  Pose pose(double t) const { return {tip(t), axis(t)}; }
+  // A direction fixed to the cutter, carried from its pose at ta to its pose at tb:
+  // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: swept_move.cpp.)
+  Vec3 carry(const Vec3& v, double ta, double tb) const;
+
+  const Vec3& tipStart() const { return tip0_; }
+  const Vec3& tipEnd() const { return tip1_; }
+  double turnRate() const { return omega_; }  // omega above, rad per unit t
+  // The axis never turns: the constant-axis kernel is exact for it. True when the turn
+  // is below 1e-12 rad, where no cutter point strays by more than reach * 1e-12 mm.
+  bool constantAxis() const { return omega_ == 0; }
+
+ private:
+  enum class Kind : unsigned char { Slerp, TableBC, TableAC };
+  Kind kind_ = Kind::Slerp;
+  Vec3 tip0_, tip1_;
+  // Slerp: axis(t) = u_ cos(phi t) + v_ sin(phi t), with u_ = a0, v_ the unit vector
+  // across it towards a1, and the exact end axis a1_ returned at t = 1.
+  Vec3 u_, v_, a1_;
+  double phi_ = 0;
+  // Rotary: tilt (B or A) and spin (C) angles at t = 0 and their changes, radians.
+  double tilt0_ = 0, dTilt_ = 0, spin0_ = 0, dSpin_ = 0;
+  double omega_ = 0;
+};
+
+}  // namespace scallop

@@ -1,0 +1,342 @@
+// The lowest point of the solid swept by a cutter whose axis turns during the move.
+//
+// Notation: pose(t) = (tip(t), axis(t)), t in [0, 1], from a PoseCurve (tip linear,
+// the cutter rotated rigidly about its tip, turn rate omega: pose_curve.h). K(t) is the
+// cutter at pose(t), convex. The swept solid is S = U_t K(t), no longer convex, and its
+// lowest point on the vertical line l through q = (x, y) is
+//     F = min over t of f(t),   f(t) = the lowest point of K(t) on l (+inf: a miss),
+// where each f(t) is exact (cutterLowestPoint, swept_segment.cpp). F is found by branch
+// and bound over t with proven lower bounds, so the answer comes with a proof:
+//
+//   1. Upper bound. Every f(t) evaluated is the height of a real point of S, so the
+//      smallest one evaluated, U, satisfies U >= F.
+//   2. Lower bound on an interval I = [ta, tb], w = tb - ta. For a unit vector N with
+//      N.z < 0 let h_t(N) = max over K(t) of N.p, the support function. Every point of
+//      K(t) on l satisfies N.p <= h_t(N), so
+//          f(t) >= (h_t(N) - N.x x - N.y y) / N.z,
+//      and a bound H >= max over I of h_t(N) bounds f on all of I. H comes from the
+//      two end poses (the chord bound): a point k of the cutter (tip at the origin)
+//      follows g(t) = N.(tip(t) + R(t) k); tip is linear and |R''k| <= omega^2 |k|, so
+//      |g''| <= omega^2 |k| and g lies below its chord plus omega^2 |k| w^2 / 8 (the
+//      interpolation error of a function with bounded second derivative). Hence
+//          H = max(h_ta(N), h_tb(N)) + omega^2 rho w^2 / 8,
+//      where rho bounds |k| over the points that can attain the support during I:
+//      each point's g moves by at most V w, V = |N.(p1 - p0)| + omega reach, so such a
+//      point lies in the cap N.k >= h - 2 V w of K(ta), which for N.a = u < 0 lies
+//      below the height s_max = (|N_perp| R + 2 V w - h) / (-u) along the axis, and
+//      rho = hypot(s_max, R) (the flute top, far from any lowest point, drops out).
+//      N is the normal at the lowest point of K(ta) or K(tb) on l; for a line that
+//      misses K or meets its side, a steep plane leaning out of the footprint.
+//   3. Why this converges fast. With N the normal at the lowest point of a pose where
+//      f is stationary (the envelope's grazing condition: N is normal to the velocity
+//      of the contact point), h_t(N) is flat to first order there, and the chord term
+//      is second order in w: the bound meets f quadratically. Away from the minimum f
+//      rises quadratically while the bound loses only omega^2 rho w^2 / 8, so
+//      intervals growing geometrically away from the minimum are all proven.
+//   4. Search. Best first: the interval with the lowest bound is split, until every
+//      interval's bound is at least U - 1e-9 mm (then F lies in [U - 1e-9, U] and U is
+//      returned) or at least the caller's cutoff (a miss). The split point is the
+//      secant root of f' = (N.v) / N.z (v: the contact point's velocity) where f'
+//      changes sign, else the width the bound can prove, estimated from the current
+//      bound's loss, which is second order: w sqrt(allowed / loss).
+//   The order of the search depends on (x, y) alone (the cutoff only stops it), so
+//   the height returned is the same whatever was evaluated before.
+#include "sweep/swept_move.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+namespace scallop {
+
+namespace {
+
+constexpr double kProofGap = 1e-9;  // mm: proven lower bound and height returned meet
+constexpr int kMaxSamples = 256;    // a guard: typical searches take 5 to 40
+
+// f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
+// (No member initialisers: a search keeps its samples in an uninitialised array.)
+struct Sample {
+  double t;
+  Vec3 tip, axis;
+  double z;      // f(t), mm; +inf when l misses K(t)
+  Vec3 normal;   // unit, normal.z < 0; zero when no plane is known
+  double hOwn;   // support of K(t) - tip(t) in `normal` (every bound needs it)
+  double slope;  // df/dt where known, else NaN
+};
+
+struct Interval {
+  int a, b;  // samples at its ends (ta < tb)
+  double lower;
+};
+
+// Searches that hit kMaxSamples before their proof closed (expected: none).
+std::atomic<unsigned long long> unprovenCount{0};
+
+// The horizontal unit direction from the footprint of the axis segment [tip, tip + L a]
+// to (x, y), leaned 1e-3 downwards: a steep plane that rises 1 mm per um outside the
+// cutter's shadow. Zero when (x, y) lies on the shadow of the axis itself.
+Vec3 steepNormal(const Cutter& c, const Vec3& tip, const Vec3& a, double x, double y) {
+  const double ex = a.x * c.fluteLength, ey = a.y * c.fluteLength, ee = ex * ex + ey * ey;
+  const double px = x - tip.x, py = y - tip.y;
+  const double s = ee > 0 ? std::clamp((px * ex + py * ey) / ee, 0.0, 1.0) : 0.0;
+  const double dx = px - s * ex, dy = py - s * ey, dd = std::sqrt(dx * dx + dy * dy);
+  if (!(dd > 1e-9)) return {};
+  return normalize(Vec3{dx / dd, dy / dd, -1e-3});
+}
+
+}  // namespace
+
+SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
+    : cutter_(cutter), curve_(curve), reach_(std::hypot(cutter.fluteLength, cutter.radius)) {
+  if (curve_.constantAxis())
+    segment_ = std::make_shared<const SweptSegment>(cutter, curve_.tipStart(), curve_.tipEnd(),
+                                                    curve_.axis(0));
+  else
+    zTop_ = support({0, 0, 1});
+}
+
+SweptMove::SweptMove(const SweptSegment& segment)
+    : cutter_(segment.cutter()),
+      curve_(PoseCurve::linear({segment.start(), segment.axis()}, {segment.end(), segment.axis()})),
+      segment_(std::make_shared<const SweptSegment>(segment)),
+      reach_(std::hypot(segment.cutter().fluteLength, segment.cutter().radius)) {}
+
+unsigned long long SweptMove::unprovenSearches() {
+  return unprovenCount.load();
+}
+
+size_t SweptMove::bytesPerMove(bool turning) {
+  // The control block and the segment of a constant-axis move live on the heap.
+  return sizeof(SweptMove) + (turning ? 0 : sizeof(SweptSegment) + 32);
+}
+
+namespace {
+
+// The chord bound of step 2: H >= max over [a.t, b.t] of h_t(N), N unit, given the
+// supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
+double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta,
+                   const Sample& a, double hKa, const Sample& b, double hKb, const Vec3& N) {
+  const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
+  const double w = b.t - a.t;
+  if (omega == 0 || w <= 0) return h;
+  // The cap of the points that can attain the support during the interval.
+  const double V = std::fabs(dot(N, delta)) + omega * reach;
+  const double u = dot(N, a.axis);
+  double rho = reach;
+  if (u < 0) {
+    const double nPerp = std::sqrt(std::max(0.0, 1 - u * u));
+    const double sMax = (nPerp * c.radius + 2 * V * w - hKa) / -u;
+    const double s = std::clamp(sMax, 0.0, c.fluteLength);
+    rho = std::min(reach, std::sqrt(s * s + c.radius * c.radius));
+  }
+  return h + omega * omega * rho * w * w / 8;
+}
+
+}  // namespace
+
+double SweptMove::support(const Vec3& dir) const {
+  if (segment_) return segment_->support(dir);
+  const double len = length(dir);
+  if (!(len > 0)) return 0;
+  Sample a, b;
+  a.t = 0, a.tip = curve_.tip(0), a.axis = curve_.axis(0);
+  b.t = 1, b.tip = curve_.tip(1), b.axis = curve_.axis(1);
+  const Vec3 N = dir / len;
+  const double h = supportOver(cutter_, curve_.turnRate(), reach_, curve_.tipEnd() - curve_.tipStart(),
+                               a, dot(N, cutterSupport(cutter_, a.axis, N)), b,
+                               dot(N, cutterSupport(cutter_, b.axis, N)), N);
+  // Round-off of the few products above, scaled back to dir's length.
+  return len * (h + 1e-12 * (1 + std::fabs(h)));
+}
+
+Box3 SweptMove::bounds() const {
+  if (segment_) return segment_->bounds();
+  Box3 box;
+  box.min = {-support({-1, 0, 0}), -support({0, -1, 0}), -support({0, 0, -1})};
+  box.max = {support({1, 0, 0}), support({0, 1, 0}), support({0, 0, 1})};
+  return box;
+}
+
+LowestPoint SweptMove::stationaryLowestPoint(double t, double x, double y) const {
+  const Vec3 tip = curve_.tip(t);
+  LowestPoint lp = cutterLowestPoint(cutter_, curve_.axis(t), x - tip.x, y - tip.y);
+  lp.z += tip.z;
+  lp.t = t;
+  return lp;
+}
+
+LowestPoint SweptMove::planeHint(double x, double y) const {
+  return segment_ ? segment_->lowestPoint(x, y) : stationaryLowestPoint(0.5, x, y);
+}
+
+LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
+  if (segment_) return segment_->lowestPoint(x, y, memo, cutoff);
+  return turningLowestPoint(x, y, cutoff);
+}
+
+LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) const {
+  const Cutter& c = cutter_;
+  const double omega = curve_.turnRate();
+  const Vec3 delta = curve_.tipEnd() - curve_.tipStart();
+
+  Sample samples[kMaxSamples];
+  int count = 0;
+  // f(t), with a proven lower bound zBelow of it to start Newton from (step 2's bound
+  // of the interval being split).
+  auto sampleAt = [&](double t, double zBelow) -> int {
+    Sample& s = samples[count];
+    s.t = t;
+    s.z = HUGE_VAL;
+    s.normal = {};
+    s.slope = std::numeric_limits<double>::quiet_NaN();
+    s.tip = curve_.tip(t);
+    s.axis = curve_.axis(t);
+    const LowestPoint lp = cutterLowestPoint(c, s.axis, x - s.tip.x, y - s.tip.y, zBelow - s.tip.z);
+    if (lp.hit) s.z = lp.z + s.tip.z;
+    if (lp.hit && lp.normal.z <= -1e-3) {
+      s.normal = lp.normal;
+      // f' = (N . v) / N.z, v the velocity of the cutter point at the lowest point.
+      const Vec3 spin = cross(s.axis, curve_.axisRate(t));
+      const Vec3 v = delta + cross(spin, Vec3{x, y, s.z} - s.tip);
+      s.slope = dot(s.normal, v) / s.normal.z;
+    } else {
+      s.normal = steepNormal(c, s.tip, s.axis, x, y);
+    }
+    s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c, s.axis, s.normal)) : 0;
+    return count++;
+  };
+  // Step 2's bound over [a.t, b.t] from one end's plane, less its round-off.
+  auto planeBound = [&](const Sample& from, const Sample& a, const Sample& b) {
+    const Vec3& N = from.normal;
+    if (N.z == 0) return -HUGE_VAL;
+    const Sample& other = &from == &a ? b : a;
+    const double hOther = dot(N, cutterSupport(c, other.axis, N));
+    const double H = &from == &a ? supportOver(c, omega, reach_, delta, a, from.hOwn, b, hOther, N)
+                                 : supportOver(c, omega, reach_, delta, a, hOther, b, from.hOwn, N);
+    const double nq = N.x * x + N.y * y;
+    const double z = (H - nq) / N.z;
+    return z - 1e-12 * (1 + std::fabs(H) + std::fabs(nq)) / -N.z;
+  };
+  // Step 2b's bound over [a.t, b.t] from the plane fixed to the cutter at `from`'s
+  // lowest point, carried to the other end. Valid below U (see there); needs a hit.
+  const double reachPlusMove = reach_ + length(delta);
+  auto movingPlaneBound = [&](const Sample& from, const Sample& to, const Sample& a,
+                              const Sample& b, double U) {
+    const Vec3& Na = from.normal;
+    if (!(from.z < HUGE_VAL) || !(Na.z <= -1e-3) || !(U < HUGE_VAL)) return -HUGE_VAL;
+    const Vec3 Nb = curve_.carry(Na, from.t, to.t);
+    const double w = b.t - a.t;
+    if (std::max(Na.z, Nb.z) + omega * w >= 0) return -HUGE_VAL;  // may turn horizontal
+    const double h = from.hOwn;
+    // |g''| <= omega^2 |Q - tip| + 2 omega |p1 - p0| for Q on l at heights in
+    // [tip.z - reach, U], the only heights where the bound is claimed.
+    double D = 0;
+    for (const Sample* e : {&a, &b})
+      D = std::max(D, std::sqrt((x - e->tip.x) * (x - e->tip.x) + (y - e->tip.y) * (y - e->tip.y)) +
+                          std::max(std::fabs(U - e->tip.z), reachPlusMove));
+    const double margin = (omega * omega * D + 2 * omega * length(delta)) * w * w / 8;
+    auto planeZ = [&](const Vec3& N, const Sample& e) {
+      const double nq = N.x * (x - e.tip.x) + N.y * (y - e.tip.y);
+      return e.tip.z + (margin + h - nq) / N.z;
+    };
+    const double z0 = std::min({planeZ(Na, from), planeZ(Nb, to), U});
+    const double floor = std::min(a.tip.z, b.tip.z) - reach_;
+    return std::max(z0, floor) - 1e-12 * (1 + std::fabs(z0) + D) / -std::max(Na.z, Nb.z);
+  };
+  // Step 2c's bound: every K(t) of the interval lies within delta of K at its middle
+  // pose, so the lowest point of that cutter grown by delta bounds them all (+inf: the
+  // line misses every one).
+  const double speed = length(delta) + omega * reach_;  // |dp/dt| of any cutter point
+  auto grownBound = [&](const Sample& a, const Sample& b) {
+    const double tc = 0.5 * (a.t + b.t), grow = speed * 0.5 * (b.t - a.t) * (1 + 1e-12) + 1e-12;
+    const Vec3 axis = curve_.axis(tc), tip = curve_.tip(tc) - axis * grow;
+    // K (+) Ball(grow) lies in the cutter with R, r grown by `grow` and L by twice that,
+    // whose tip is `grow` lower along the axis (the same core, swept a ball wider).
+    Cutter grown = c;
+    grown.radius += grow, grown.cornerRadius += grow, grown.fluteLength += 2 * grow;
+    const LowestPoint lp = cutterLowestPoint(grown, axis, x - tip.x, y - tip.y);
+    if (!lp.hit) return HUGE_VAL;
+    return lp.z + tip.z - 1e-12 * (1 + std::fabs(lp.z) + std::fabs(tip.z));
+  };
+  auto smooth = [](const Sample& s) { return s.z < HUGE_VAL && s.normal.z <= -1e-3; };
+  auto boundOf = [&](int ia, int ib, double U) {
+    const Sample &a = samples[(ia)], &b = samples[(ib)];
+    if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z)};  // both ends are known
+    const double enough = std::min(U - kProofGap, zTop_);
+    // The cutter-fixed planes first (tight wherever the line meets the cutters' lower
+    // faces); the world-fixed planes where those do not settle it; where the line
+    // leaves or grazes a cutter, planes say little and the grown cutter decides.
+    double lower = std::max(movingPlaneBound(a, b, a, b, U), movingPlaneBound(b, a, a, b, U));
+    if (!(lower >= enough)) lower = std::max({lower, planeBound(a, a, b), planeBound(b, a, b)});
+    if (!(lower >= enough) && !(smooth(a) && smooth(b))) lower = std::max(lower, grownBound(a, b));
+    return Interval{ia, ib, lower};
+  };
+
+  const int s0 = sampleAt(0, -HUGE_VAL), s1 = sampleAt(1, -HUGE_VAL);
+  int best = samples[(s1)].z < samples[(s0)].z ? s1 : s0;
+  double U = samples[(best)].z;
+
+  Interval open[kMaxSamples];
+  int openCount = 0;
+  // An interval is done when its bound proves it cannot improve U (to the gap) or when
+  // the bound lies above the whole solid's top: the line meets no cutter there.
+  auto done = [&](const Interval& iv) { return iv.lower >= std::min(U - kProofGap, zTop_); };
+  auto push = [&](const Interval& iv) {
+    if (!done(iv)) open[(openCount++)] = iv;
+  };
+  push(boundOf(s0, s1, U));
+
+  while (openCount > 0 && count < kMaxSamples) {
+    // Best first: the interval with the lowest bound (ties: the earlier in t).
+    int k = 0;
+    for (int i = 1; i < openCount; ++i) {
+      const Interval &p = open[(i)], &q = open[(k)];
+      if (p.lower < q.lower || (p.lower == q.lower && samples[(p.a)].t < samples[(q.a)].t))
+        k = i;
+    }
+    const Interval iv = open[(k)];
+    if (done(iv)) break;                   // proven: F >= U - 1e-9, or no hit at all
+    if (iv.lower >= cutoff) return {};     // proven: F >= cutoff
+    open[(k)] = open[(--openCount)];
+
+    const Sample &A = samples[(iv.a)], &B = samples[(iv.b)];
+    const double w = B.t - A.t;
+    double ts = A.t + 0.5 * w;
+    bool chosen = false;
+    if (A.slope < 0 && B.slope > 0) {  // f' changes sign inside: its secant root
+      const double r = A.t + w * (-A.slope / (B.slope - A.slope));
+      if (r > A.t + w / 32 && r < B.t - w / 32) ts = r, chosen = true;
+    }
+    if (!chosen && (std::isfinite(A.z) || std::isfinite(B.z))) {
+      // From the lower end, the width its plane can prove: the loss of the current
+      // bound is second order in the width near a minimum.
+      const bool fromA = A.z <= B.z;
+      const Sample& low = fromA ? A : B;
+      const double loss = low.z - iv.lower;
+      const double allowed = low.z - (U - kProofGap);
+      double step = 0.5;
+      if (loss > 0 && allowed > 0) step = std::clamp(0.8 * std::sqrt(allowed / loss), 1.0 / 64, 0.5);
+      ts = fromA ? A.t + step * w : B.t - step * w;
+    }
+    if (!(ts > A.t && ts < B.t)) continue;  // below double resolution in t: done
+    const int is = sampleAt(ts, iv.lower);
+    if (samples[(is)].z < U) U = samples[(is)].z, best = is;
+    // Children that the new U already proves are dropped by push(), as are open
+    // intervals, lazily, when picked.
+    push(boundOf(iv.a, is, U));
+    push(boundOf(is, iv.b, U));
+  }
+  if (openCount > 0 && count >= kMaxSamples) unprovenCount.fetch_add(1, std::memory_order_relaxed);
+  if (!(U < cutoff)) return {};
+  LowestPoint out;
+  out.hit = true;
+  out.z = U;
+  out.normal = samples[(best)].normal;
+  out.t = samples[(best)].t;
+  if (out.normal.z == 0) out.normal = {0, 0, -1};
+  return out;
+}
+
+}  // namespace scallop

@@ -1,0 +1,82 @@
+// SweptMove: the solid swept by a cutter along one move, whatever its axis does, and
+// its exact lowest point on a vertical line. One primitive per move of a tool path.
+//
+// A move whose axis is constant is a SweptSegment (the convex Minkowski sweep,
+// swept_segment.cpp); a move whose axis turns (CL data with a new axis at every point,
+// a 5-axis machine's rotary motion) is solved by the certified search over t of
+// swept_move.cpp. Either way the height is the lowest point of the true swept solid,
+// with a proven lower bound within 1e-9 mm of the height returned.
+//
+// Memory: sizeof(SweptMove) bytes per move (about 200), plus, for a constant-axis
+// move, one SweptSegment on the heap (about 900 bytes; see bytesPerMove()).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <memory>
+
+#include "sweep/cutter.h"
+#include "sweep/pose_curve.h"
+#include "sweep/swept_segment.h"
+
+namespace scallop {
+
+class SweptMove {
+ public:
+  SweptMove(const Cutter& cutter, const PoseCurve& curve);
+  // A constant-axis move from an existing segment (the sweep of merged collinear moves).
+  explicit SweptMove(const SweptSegment& segment);
+
+  // The lowest point of the swept solid on the vertical line through (x, y). `memo`
+  // serves constant-axis moves (SweptSegment::lowestPoint). A height at or above
+  // `cutoff` may be reported as a miss; the height returned otherwise does not depend
+  // on `cutoff` or `memo`.
+  LowestPoint lowestPoint(double x, double y, SectionMemo* memo = nullptr,
+                          double cutoff = HUGE_VAL) const;
+
+  // The lowest point of the cutter standing at pose(t) alone: a convex function of
+  // (x, y) (K(t) is convex) at or above the swept solid's heights.
+  LowestPoint stationaryLowestPoint(double t, double x, double y) const;
+
+  // A lowest point whose normal makes a good culling plane through support() near
+  // (x, y) (any normal gives a valid one): the exact lowest point for a constant axis,
+  // the cutter at mid-move for a turning move, which costs one stationary evaluation
+  // instead of a search.
+  LowestPoint planeHint(double x, double y) const;
+
+  // An upper bound of the swept solid's support function max over the solid of
+  // dot(dir, p) (exact for a constant axis). For dir.z < 0 the plane dot(dir, p) =
+  // support(dir) lies below every height: the scene's culling planes.
+  double support(const Vec3& dir) const;
+  // Axis-aligned bounds containing the swept solid (from support() in the six
+  // directions, so tight for a constant axis and within the turn's bound otherwise).
+  Box3 bounds() const;
+
+  const Cutter& cutter() const { return cutter_; }
+  const PoseCurve& curve() const { return curve_; }
+  const Vec3& start() const { return curve_.tipStart(); }  // tip at t = 0
+  const Vec3& end() const { return curve_.tipEnd(); }      // tip at t = 1
+  bool turning() const { return !segment_; }
+  // The constant-axis kernel, or null for a turning move.
+  const SweptSegment* segment() const { return segment_.get(); }
+
+  // Bytes a move of this kind holds (the object and what it owns), for memory
+  // estimates made before a scene is built.
+  static size_t bytesPerMove(bool turning);
+
+  // Searches of turning moves, over all threads so far, that ran out of samples before
+  // their proof closed (their height is still a real point of the solid). Tests
+  // expect none.
+  static unsigned long long unprovenSearches();
+
+ private:
+  LowestPoint turningLowestPoint(double x, double y, double cutoff) const;
+
+  Cutter cutter_;
+  PoseCurve curve_;
+  std::shared_ptr<const SweptSegment> segment_;  // constant axis only
+  double reach_ = 0;  // farthest cutter point from the tip, hypot(L, R), mm
+  double zTop_ = 0;   // turning: an upper bound of the solid's highest z, mm
+};
+
+}  // namespace scallop
