@@ -68,8 +68,8 @@ StampStats stampZMap(const std::vector<SweptMove>& segments, ZMap& map,
     const PoseCurve& curve = seg.curve();
     // A turning axis moves the cutter's lower part (within R of the tip) by up to
     // R omega per unit t besides the tip's motion: the stamps are spaced for both.
-    const double step = options.step > 0 ? options.step
-                                         : stampStepFor(c, curve.axis(0), options.tolerance);
+    const double step =
+        options.step > 0 ? options.step : stampStepFor(c, curve.axis(0), options.tolerance);
     stats.minStep = std::min(stats.minStep, step);
     const double travel = length(seg.end() - seg.start()) + c.radius * curve.turnRate();
     const int64_t n = std::max<int64_t>(1, int64_t(std::ceil(travel / step)));

@@ -52,8 +52,8 @@ struct StampStats {
 };
 
 // Lowers every cell of `map` to the lowest height of the cutter stamped at evenly
-// spaced poses of each move's pose curve (both ends included). Parallel over tiles of cells; each tile visits the
-// stamps whose footprint overlaps it, so there are no races and the result does not
+// spaced poses of each move's pose curve (both ends included). Parallel over tiles of cells; each
+// tile visits the stamps whose footprint overlaps it, so there are no races and the result does not
 // depend on the number of threads.
 StampStats stampZMap(const std::vector<SweptMove>& segments, ZMap& map,
                      const StampOptions& options = {});

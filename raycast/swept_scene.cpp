@@ -97,8 +97,7 @@ TilePlane planeBelow(const SweptMove& seg, const Vec3& N) {
 // the nearest point of the move's tip path: it rises by 1 mm per um outside the
 // footprint, so cells beyond the rim are culled without an evaluation. Returns false
 // when neither applies (the point lies on the tip path itself).
-bool planeFrom(const SweptMove& seg, const LowestPoint& lp, double x, double y,
-               TilePlane& plane) {
+bool planeFrom(const SweptMove& seg, const LowestPoint& lp, double x, double y, TilePlane& plane) {
   if (lp.hit && lp.normal.z <= -1e-3) {
     plane = planeBelow(seg, lp.normal);
     return true;
@@ -419,7 +418,7 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
     const SweptMove& seg = impl_->segments[cand.segment];
     SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
     ++evaluations;
-    const LowestPoint lp = seg.turning() ? seg.planeHint(x, y) : seg.lowestPoint(x, y, memo);
+    const LowestPoint lp = seg.lowestPoint(x, y, memo);
     TilePlane plane;
     if (planeFrom(seg, lp, x, y, plane)) cand.a = plane.a, cand.b = plane.b, cand.c = plane.c;
   }

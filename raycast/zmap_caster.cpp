@@ -77,9 +77,9 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
         uint32_t hint = rowStart;
         for (int64_t i = bi; i < bi1; ++i) {
           const uint32_t tried = hint;
-          map.at(i, j) = scene.lowestHeightAmong(candidates, block, g.cellCentreX(i),
-                                                 g.cellCentreY(j), map.at(i, j), evals, &cache,
-                                                 &hint);
+          map.at(i, j) =
+              scene.lowestHeightAmong(candidates, block, g.cellCentreX(i), g.cellCentreY(j),
+                                      map.at(i, j), evals, &cache, &hint);
           if (hint == UINT32_MAX) hint = tried;  // the ceiling held: keep the old guess
           if (i == bi) rowStart = hint;
         }

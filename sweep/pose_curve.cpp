@@ -33,7 +33,25 @@ Vec3 rotZ(const Vec3& v, double angle) {
   return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
+double clampUnit(double t) {
+  return std::clamp(t, 0.0, 1.0);
+}
+
 }  // namespace
+
+namespace {
+
+// The angle between unit axes from atan2 of the cross and dot products: accurate for
+// small and near-straight turns alike (acos loses half the digits near 0 and pi).
+double turnAngle(const Vec3& a0, const Vec3& a1) {
+  return std::atan2(length(cross(a0, a1)), dot(a0, a1));
+}
+
+}  // namespace
+
+bool PoseCurve::turns(const Vec3& a0, const Vec3& a1) {
+  return turnAngle(normalize(a0), normalize(a1)) > kNoTurn;
+}
 
 PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where) {
   PoseCurve c;
@@ -43,9 +61,7 @@ PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where)
   const Vec3 a0 = normalize(from.axis), a1 = normalize(to.axis);
   c.u_ = a0;
   c.a1_ = a1;
-  // The angle from atan2 of the cross and dot products is accurate for small and for
-  // near-straight turns alike (acos loses half the digits near 0 and pi).
-  const double phi = std::atan2(length(cross(a0, a1)), dot(a0, a1));
+  const double phi = turnAngle(a0, a1);
   if (phi > 3.14159265358979323846 - 1e-9)
     throw InputError(where, "the axis turns by 180 degrees; the rotation is undefined");
   if (phi <= kNoTurn) {
@@ -58,8 +74,8 @@ PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where)
   return c;
 }
 
-PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& tip1,
-                            double tilt0, double tilt1, double spin0, double spin1) {
+PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& tip1, double tilt0,
+                            double tilt1, double spin0, double spin1) {
   PoseCurve c;
   c.kind_ = kin == RotaryKinematics::TableBC ? Kind::TableBC : Kind::TableAC;
   c.tip0_ = tip0;
@@ -103,15 +119,21 @@ Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
   return rotZ(rotX(rotX(rotZ(v, spinA), tiltA), -tiltB), -spinB);
 }
 
-Vec3 PoseCurve::axisRate(double t) const {
+Vec3 PoseCurve::spin(double t) const {
   if (omega_ == 0) return {};
-  t = std::clamp(t, 0.0, 1.0);
-  if (kind_ == Kind::Slerp) return (v_ * std::cos(phi_ * t) - u_ * std::sin(phi_ * t)) * phi_;
-  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
-  const double st = std::sin(tilt), ct = std::cos(tilt), ss = std::sin(spin), cs = std::cos(spin);
-  if (kind_ == Kind::TableBC)
-    return Vec3{-cs * ct, ss * ct, -st} * dTilt_ + Vec3{ss * st, cs * st, 0} * dSpin_;
-  return Vec3{ss * ct, cs * ct, -st} * dTilt_ + Vec3{cs * st, -ss * st, 0} * dSpin_;
+  if (kind_ == Kind::Slerp) return cross(u_, v_) * phi_;  // a fixed axis, constant rate
+  // R = A(t) B(t) with A = Rz(-C) and B = Ry(-B) or Rx(-A): Omega = Omega_A + A Omega_B.
+  const double spin = spin0_ + dSpin_ * clampUnit(t);
+  const Vec3 tiltAxis = kind_ == Kind::TableBC ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
+  return Vec3{0, 0, -dSpin_} + rotZ(tiltAxis, -spin);
+}
+
+Vec3 PoseCurve::spinRate(double t) const {
+  if (omega_ == 0 || kind_ == Kind::Slerp) return {};
+  // d/dt (A Omega_B) = Omega_A x (A Omega_B); Omega_A is constant.
+  const double spin = spin0_ + dSpin_ * clampUnit(t);
+  const Vec3 tiltAxis = kind_ == Kind::TableBC ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
+  return cross(Vec3{0, 0, -dSpin_}, rotZ(tiltAxis, -spin));
 }
 
 }  // namespace scallop

@@ -34,16 +34,19 @@ class PoseCurve {
   // InputError (where = `where`) for a turn of 180 degrees, whose great circle is
   // undefined.
   static PoseCurve linear(const Pose& from, const Pose& to, const char* where = "path move");
+  // Whether slerp from a0 to a1 turns (by more than the 1e-12 rad treated as none).
+  static bool turns(const Vec3& a0, const Vec3& a1);
   // A table-table machine with TCP on: tip linear, rotary angles (radians) linear in t.
   static PoseCurve rotary(RotaryKinematics kinematics, const Vec3& tip0, const Vec3& tip1,
                           double tilt0, double tilt1, double spin0, double spin1);
 
   Vec3 tip(double t) const;
   Vec3 axis(double t) const;
-  // d axis / dt: with the tip velocity it gives the velocity of every cutter point,
-  // v = (p1 - p0) + (axis x axis') x (p - tip), which the kernel uses only to guess.
-  Vec3 axisRate(double t) const;
   Pose pose(double t) const { return {tip(t), axis(t)}; }
+  // The cutter's angular velocity Omega(t) (rad per unit t; a direction n fixed to the
+  // cutter has n' = Omega x n) and its derivative Omega'(t).
+  Vec3 spin(double t) const;
+  Vec3 spinRate(double t) const;
   // A direction fixed to the cutter, carried from its pose at ta to its pose at tb:
   // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: swept_move.cpp.)
   Vec3 carry(const Vec3& v, double ta, double tb) const;

@@ -52,8 +52,9 @@ namespace scallop {
 
 namespace {
 
-constexpr double kProofGap = 1e-9;  // mm: proven lower bound and height returned meet
-constexpr int kMaxSamples = 256;    // a guard: typical searches take 5 to 40
+constexpr double kProofGap = 1e-9;   // mm: proven lower bound and height returned meet
+constexpr int kMaxSamples = 256;     // a guard: typical searches take 3 to 40
+constexpr double kFlatSlope = 1e-8;  // mm per unit t: a sample at a minimum of f
 
 // f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
 // (No member initialisers: a search keeps its samples in an uninitialised array.)
@@ -64,11 +65,13 @@ struct Sample {
   Vec3 normal;   // unit, normal.z < 0; zero when no plane is known
   double hOwn;   // support of K(t) - tip(t) in `normal` (every bound needs it)
   double slope;  // df/dt where known, else NaN
+  Vec3 dn, ddn;  // d/dt and d2/dt2 of `normal` carried with the cutter (steps 2b, 2d)
 };
 
 struct Interval {
-  int a, b;  // samples at its ends (ta < tb)
-  double lower;
+  int a, b;      // samples at its ends (ta < tb)
+  double lower;  // its proven lower bound of f
+  double U;      // the best height when it was bounded (a lower one may prove more)
 };
 
 // Searches that hit kMaxSamples before their proof closed (expected: none).
@@ -116,8 +119,8 @@ namespace {
 
 // The chord bound of step 2: H >= max over [a.t, b.t] of h_t(N), N unit, given the
 // supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
-double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta,
-                   const Sample& a, double hKa, const Sample& b, double hKb, const Vec3& N) {
+double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta, const Sample& a,
+                   double hKa, const Sample& b, double hKb, const Vec3& N) {
   const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
   const double w = b.t - a.t;
   if (omega == 0 || w <= 0) return h;
@@ -144,9 +147,9 @@ double SweptMove::support(const Vec3& dir) const {
   a.t = 0, a.tip = curve_.tip(0), a.axis = curve_.axis(0);
   b.t = 1, b.tip = curve_.tip(1), b.axis = curve_.axis(1);
   const Vec3 N = dir / len;
-  const double h = supportOver(cutter_, curve_.turnRate(), reach_, curve_.tipEnd() - curve_.tipStart(),
-                               a, dot(N, cutterSupport(cutter_, a.axis, N)), b,
-                               dot(N, cutterSupport(cutter_, b.axis, N)), N);
+  const double h = supportOver(
+      cutter_, curve_.turnRate(), reach_, curve_.tipEnd() - curve_.tipStart(), a,
+      dot(N, cutterSupport(cutter_, a.axis, N)), b, dot(N, cutterSupport(cutter_, b.axis, N)), N);
   // Round-off of the few products above, scaled back to dir's length.
   return len * (h + 1e-12 * (1 + std::fabs(h)));
 }
@@ -198,9 +201,11 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     if (lp.hit && lp.normal.z <= -1e-3) {
       s.normal = lp.normal;
       // f' = (N . v) / N.z, v the velocity of the cutter point at the lowest point.
-      const Vec3 spin = cross(s.axis, curve_.axisRate(t));
+      const Vec3 spin = curve_.spin(t);
       const Vec3 v = delta + cross(spin, Vec3{x, y, s.z} - s.tip);
       s.slope = dot(s.normal, v) / s.normal.z;
+      s.dn = cross(spin, s.normal);
+      s.ddn = cross(curve_.spinRate(t), s.normal) + cross(spin, s.dn);
     } else {
       s.normal = steepNormal(c, s.tip, s.axis, x, y);
     }
@@ -221,7 +226,23 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   };
   // Step 2b's bound over [a.t, b.t] from the plane fixed to the cutter at `from`'s
   // lowest point, carried to the other end. Valid below U (see there); needs a hit.
-  const double reachPlusMove = reach_ + length(delta);
+  // Steps 2b and 2d share the plane fixed to the cutter at a sample S and its
+  // derivatives: g(t) = N(t).(Q - tip(t)) - h_S with N(t) = R(t) R(tS)^-1 N_S, so that
+  //   g'  = N'.(Q - tip) - N.(p1 - p0),     N'  = Omega x N,
+  //   g'' = N''.(Q - tip) - 2 N'.(p1 - p0), N'' = Omega' x N + Omega x (Omega x N),
+  // and |g'''| <= omega^3 D + 3 omega^2 |p1 - p0| (|N^(k)| <= omega^k), D >= |Q - tip|.
+  const double move = length(delta);
+  auto distanceBound = [&](const Sample& a, const Sample& b, double zLow, double zHigh) {
+    double D = 0;  // >= |Q - tip(t)| for t in [a.t, b.t] and Q.z in [zLow, zHigh]
+    for (const Sample* e : {&a, &b})
+      D = std::max(D, std::sqrt((x - e->tip.x) * (x - e->tip.x) + (y - e->tip.y) * (y - e->tip.y)) +
+                          std::max(std::fabs(zHigh - e->tip.z), std::fabs(zLow - e->tip.z)));
+    return D + move;
+  };
+  // Step 2b: g >= its chord - max(0, sup g'') w^2 / 8 (only curvature towards the line
+  // costs: a concave g lies above its chord), and the chord >= the smaller end value;
+  // each end's g >= margin moves the plane up by the margin. The heights where this is
+  // claimed are [lowest tip - reach, U]: Q's z enters g'' and D there.
   auto movingPlaneBound = [&](const Sample& from, const Sample& to, const Sample& a,
                               const Sample& b, double U) {
     const Vec3& Na = from.normal;
@@ -230,20 +251,41 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     const double w = b.t - a.t;
     if (std::max(Na.z, Nb.z) + omega * w >= 0) return -HUGE_VAL;  // may turn horizontal
     const double h = from.hOwn;
-    // |g''| <= omega^2 |Q - tip| + 2 omega |p1 - p0| for Q on l at heights in
-    // [tip.z - reach, U], the only heights where the bound is claimed.
-    double D = 0;
-    for (const Sample* e : {&a, &b})
-      D = std::max(D, std::sqrt((x - e->tip.x) * (x - e->tip.x) + (y - e->tip.y) * (y - e->tip.y)) +
-                          std::max(std::fabs(U - e->tip.z), reachPlusMove));
-    const double margin = (omega * omega * D + 2 * omega * length(delta)) * w * w / 8;
+    const double floor = std::min(a.tip.z, b.tip.z) - reach_;
+    const double D = distanceBound(a, b, floor, U);
+    const double cross2 = 2 * dot(from.dn, delta);
+    double gpp = -HUGE_VAL;  // sup of g'' over the interval and those heights
+    for (double z : {floor, U})
+      gpp = std::max(gpp, dot(from.ddn, Vec3{x, y, z} - from.tip) - cross2);
+    gpp += (omega * omega * omega * D + 3 * omega * omega * move) * w;
+    const double margin = std::max(0.0, gpp) * w * w / 8;
     auto planeZ = [&](const Vec3& N, const Sample& e) {
       const double nq = N.x * (x - e.tip.x) + N.y * (y - e.tip.y);
       return e.tip.z + (margin + h - nq) / N.z;
     };
     const double z0 = std::min({planeZ(Na, from), planeZ(Nb, to), U});
-    const double floor = std::min(a.tip.z, b.tip.z) - reach_;
     return std::max(z0, floor) - 1e-12 * (1 + std::fabs(z0) + D) / -std::max(Na.z, Nb.z);
+  };
+  // Step 2d: whether height z is proven below every K(t), t in [a.t, b.t], by the Taylor
+  // form at `from`: g(t) >= g + g' tau + m tau^2 / 2 with m = g''(tS) - |g'''| w, whose
+  // minimum over tau is closed form. Where g curves away from the line (m > 0: the
+  // convex case that costs step 2b its margin) this proves a whole interval from one
+  // sample at a minimum of f, where g' ~ 0.
+  auto taylorProves = [&](const Sample& from, const Sample& a, const Sample& b, double z) {
+    const Vec3& N = from.normal;
+    if (!(from.z < HUGE_VAL) || !(N.z <= -1e-3)) return false;
+    const double w = b.t - a.t;
+    if (std::max(N.z, curve_.carry(N, from.t, from.t == a.t ? b.t : a.t).z) + omega * w >= 0)
+      return false;
+    const Vec3 q = Vec3{x, y, z} - from.tip;
+    const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, delta);
+    const double D = distanceBound(a, b, z, z);
+    const double m = dot(from.ddn, q) - 2 * dot(from.dn, delta) -
+                     (omega * omega * omega * D + 3 * omega * omega * move) * w;
+    const double ta = a.t - from.t, tb = b.t - from.t;
+    double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
+    if (m > 0 && -g1 / m > ta && -g1 / m < tb) low = std::min(low, g0 - 0.5 * g1 * g1 / m);
+    return low > 1e-13 * (1 + D);
   };
   // Step 2c's bound: every K(t) of the interval lies within delta of K at its middle
   // pose, so the lowest point of that cutter grown by delta bounds them all (+inf: the
@@ -263,15 +305,18 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   auto smooth = [](const Sample& s) { return s.z < HUGE_VAL && s.normal.z <= -1e-3; };
   auto boundOf = [&](int ia, int ib, double U) {
     const Sample &a = samples[(ia)], &b = samples[(ib)];
-    if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z)};  // both ends are known
+    if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z), U};  // both ends are known
     const double enough = std::min(U - kProofGap, zTop_);
     // The cutter-fixed planes first (tight wherever the line meets the cutters' lower
     // faces); the world-fixed planes where those do not settle it; where the line
     // leaves or grazes a cutter, planes say little and the grown cutter decides.
     double lower = std::max(movingPlaneBound(a, b, a, b, U), movingPlaneBound(b, a, a, b, U));
     if (!(lower >= enough)) lower = std::max({lower, planeBound(a, a, b), planeBound(b, a, b)});
+    if (!(lower >= enough) && U < HUGE_VAL &&
+        (taylorProves(a, a, b, U - kProofGap) || taylorProves(b, a, b, U - kProofGap)))
+      lower = U - kProofGap;
     if (!(lower >= enough) && !(smooth(a) && smooth(b))) lower = std::max(lower, grownBound(a, b));
-    return Interval{ia, ib, lower};
+    return Interval{ia, ib, lower, U};
   };
 
   const int s0 = sampleAt(0, -HUGE_VAL), s1 = sampleAt(1, -HUGE_VAL);
@@ -288,26 +333,44 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   };
   push(boundOf(s0, s1, U));
 
+  auto bracketsMinimum = [&](const Interval& iv) {
+    return samples[iv.a].slope < 0 && samples[iv.b].slope > 0;
+  };
   while (openCount > 0 && count < kMaxSamples) {
-    // Best first: the interval with the lowest bound (ties: the earlier in t).
-    int k = 0;
-    for (int i = 1; i < openCount; ++i) {
-      const Interval &p = open[(i)], &q = open[(k)];
-      if (p.lower < q.lower || (p.lower == q.lower && samples[(p.a)].t < samples[(q.a)].t))
+    // Until the best sample is a minimum of f to round-off (f' ~ 0, where step 2d proves
+    // the intervals beside it at once), an interval whose ends bracket a root of f' is
+    // split first; otherwise best first: the lowest bound (ties: the earlier in t).
+    const bool polish = !(std::fabs(samples[best].slope) <= kFlatSlope);
+    int k = -1;
+    for (int i = 0; i < openCount; ++i) {
+      const Interval& p = open[i];
+      if (polish && k >= 0 && bracketsMinimum(open[k]) && !bracketsMinimum(p)) continue;
+      if (k < 0 || (polish && bracketsMinimum(p) && !bracketsMinimum(open[k])) ||
+          p.lower < open[k].lower ||
+          (p.lower == open[k].lower && samples[p.a].t < samples[open[k].a].t))
         k = i;
     }
-    const Interval iv = open[(k)];
-    if (done(iv)) break;                   // proven: F >= U - 1e-9, or no hit at all
-    if (iv.lower >= cutoff) return {};     // proven: F >= cutoff
+    Interval iv = open[k];
+    if (iv.U > U) {  // bounded before U fell: bound it again, and pick anew
+      open[k] = boundOf(iv.a, iv.b, U);
+      if (done(open[k])) open[k] = open[--openCount];
+      continue;
+    }
+    if (done(iv)) {
+      if (!(polish && bracketsMinimum(iv))) break;  // proven: F >= U - 1e-9, or no hit
+      open[k] = open[--openCount];
+      continue;
+    }
+    if (iv.lower >= cutoff) return {};  // proven: F >= cutoff
     open[(k)] = open[(--openCount)];
 
     const Sample &A = samples[(iv.a)], &B = samples[(iv.b)];
     const double w = B.t - A.t;
     double ts = A.t + 0.5 * w;
     bool chosen = false;
-    if (A.slope < 0 && B.slope > 0) {  // f' changes sign inside: its secant root
+    if (bracketsMinimum(iv)) {  // f' changes sign inside: its secant root
       const double r = A.t + w * (-A.slope / (B.slope - A.slope));
-      if (r > A.t + w / 32 && r < B.t - w / 32) ts = r, chosen = true;
+      if (r > A.t + w / 1024 && r < B.t - w / 1024) ts = r, chosen = true;
     }
     if (!chosen && (std::isfinite(A.z) || std::isfinite(B.z))) {
       // From the lower end, the width its plane can prove: the loss of the current
@@ -317,7 +380,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
       const double loss = low.z - iv.lower;
       const double allowed = low.z - (U - kProofGap);
       double step = 0.5;
-      if (loss > 0 && allowed > 0) step = std::clamp(0.8 * std::sqrt(allowed / loss), 1.0 / 64, 0.5);
+      if (loss > 0 && allowed > 0)
+        step = std::clamp(0.8 * std::sqrt(allowed / loss), 1.0 / 64, 0.5);
       ts = fromA ? A.t + step * w : B.t - step * w;
     }
     if (!(ts > A.t && ts < B.t)) continue;  // below double resolution in t: done

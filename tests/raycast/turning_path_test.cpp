@@ -69,7 +69,8 @@ double referenceHeight(const ref::RefCutter& c, const ToolPath& path, double x, 
     const ref::RefHit h = ref::stationaryLowest(grown, tip, axis, x, y);
     if (h.hit && h.z < ceiling) order.push_back({h.z, k});
   }
-  std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) { return a.bound < b.bound; });
+  std::sort(order.begin(), order.end(),
+            [](const Entry& a, const Entry& b) { return a.bound < b.bound; });
   double best = ceiling;
   for (const Entry& e : order) {
     if (e.bound >= best) break;

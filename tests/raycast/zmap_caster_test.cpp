@@ -64,7 +64,8 @@ Fixture turningFixture() {
   auto pose = [](double x, double y) {
     const Vec3 normal =
         normalize(Vec3{-0.2 * std::cos(x) * std::cos(y), 0.2 * std::sin(x) * std::sin(y), 1});
-    return Pose{{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)}, normalize(normal + Vec3{0.08, 0, 0})};
+    return Pose{{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)},
+                normalize(normal + Vec3{0.08, 0, 0})};
   };
   for (double y = -0.5; y <= 3.5; y += 0.9)
     for (int k = 0; k < 60; ++k)
@@ -103,7 +104,8 @@ TEST(ZMapCaster, ThreadCountDoesNotChangeABit) {
 // map's rows, bit for bit.
 TEST(ZMapCaster, BandsEqualTheWholeMapBitForBit) {
   const Fixture f = turningFixture();
-  const GridSpec grid = gridCovering(f.stock.min.x, f.stock.min.y, f.stock.max.x, f.stock.max.y, 0.017);
+  const GridSpec grid =
+      gridCovering(f.stock.min.x, f.stock.min.y, f.stock.max.x, f.stock.max.y, 0.017);
   const std::unique_ptr<SweptScene> scene = buildScene(f.cutter, f.path, f.stock, grid.spacing);
   ZMap whole(grid, f.stock.max.z);
   castZMap(*scene, whole);
@@ -112,7 +114,8 @@ TEST(ZMapCaster, BandsEqualTheWholeMapBitForBit) {
     ZMap band(grid.rows(j0, j1), f.stock.max.z);
     castZMap(*scene, band);
     for (int64_t j = j0; j < j1; ++j)
-      for (int64_t i = 0; i < grid.nx; ++i) ASSERT_EQ(band.at(i, j - j0), whole.at(i, j)) << i << " " << j;
+      for (int64_t i = 0; i < grid.nx; ++i)
+        ASSERT_EQ(band.at(i, j - j0), whole.at(i, j)) << i << " " << j;
   }
 }
 
@@ -120,19 +123,19 @@ TEST(ZMapCaster, EveryCellIsTheMinimumOverAllSegments) {
   // Against the definition with no culling at all: each cell's height is the minimum of
   // the stock top and every swept segment's exact lowest point.
   for (const Fixture& f : {freeformFixture(), turningFixture()}) {
-  const ZMap map = cast(f, 0.05, 16, 2);
-  const std::vector<SweptMove> segs = sweepToolPath(f.cutter, f.path);
-  const GridSpec& g = map.grid();
-  for (int64_t j = 0; j < g.ny; j += 3) {
-    for (int64_t i = 0; i < g.nx; i += 3) {
-      double want = f.stock.max.z;
-      for (const SweptMove& s : segs) {
-        const LowestPoint lp = s.lowestPoint(g.cellCentreX(i), g.cellCentreY(j));
-        if (lp.hit) want = std::min(want, lp.z);
+    const ZMap map = cast(f, 0.05, 16, 2);
+    const std::vector<SweptMove> segs = sweepToolPath(f.cutter, f.path);
+    const GridSpec& g = map.grid();
+    for (int64_t j = 0; j < g.ny; j += 3) {
+      for (int64_t i = 0; i < g.nx; i += 3) {
+        double want = f.stock.max.z;
+        for (const SweptMove& s : segs) {
+          const LowestPoint lp = s.lowestPoint(g.cellCentreX(i), g.cellCentreY(j));
+          if (lp.hit) want = std::min(want, lp.z);
+        }
+        ASSERT_EQ(map.at(i, j), want) << i << " " << j;
       }
-      ASSERT_EQ(map.at(i, j), want) << i << " " << j;
     }
-  }
   }
 }
 

@@ -20,7 +20,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 Vec3 unitFromAngles(double polar, double azimuth) {
-  return {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)};
+  return {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+          std::cos(polar)};
 }
 
 struct RandomCase {
@@ -35,7 +36,8 @@ RandomCase randomCase(std::mt19937_64& rng, int k) {
   std::uniform_real_distribution<double> u(0, 1);
   RandomCase c;
   const double R = 1 + 4 * u(rng);
-  const CutterType type = k % 3 == 0 ? CutterType::Ball : (k % 3 == 1 ? CutterType::Flat : CutterType::Bull);
+  const CutterType type =
+      k % 3 == 0 ? CutterType::Ball : (k % 3 == 1 ? CutterType::Flat : CutterType::Bull);
   const double r = type == CutterType::Bull ? R * (0.15 + 0.7 * u(rng)) : 0;
   const double L = R * (2 + 3 * u(rng));
   c.cutter = Cutter::make(type, R, r, L);
@@ -115,16 +117,20 @@ TEST(SweptMove, RandomTurningMovesAgreeWithBruteForce) {
       worst = std::max(worst, std::fabs(err));
       if (std::fabs(err) > 1e-6) {
         ++failures;
-        ADD_FAILURE() << "case " << k << " type " << toString(rc.cutter.type) << " ("
-                      << x << ", " << y << "): kernel " << lp.z << ", reference " << r.hit.z;
-        std::fprintf(stderr, "R %.17g r %.17g L %.17g a0 %.17g %.17g %.17g a1 %.17g %.17g %.17g p1 %.17g %.17g %.17g x %.17g y %.17g\n",
-                     rc.cutter.radius, rc.cutter.cornerRadius, rc.cutter.fluteLength, rc.a0.x, rc.a0.y, rc.a0.z, rc.a1.x, rc.a1.y, rc.a1.z, rc.p1.x, rc.p1.y, rc.p1.z, x, y);
+        ADD_FAILURE() << "case " << k << " type " << toString(rc.cutter.type) << " (" << x << ", "
+                      << y << "): kernel " << lp.z << ", reference " << r.hit.z;
+        std::fprintf(stderr,
+                     "R %.17g r %.17g L %.17g a0 %.17g %.17g %.17g a1 %.17g %.17g %.17g p1 %.17g "
+                     "%.17g %.17g x %.17g y %.17g\n",
+                     rc.cutter.radius, rc.cutter.cornerRadius, rc.cutter.fluteLength, rc.a0.x,
+                     rc.a0.y, rc.a0.z, rc.a1.x, rc.a1.y, rc.a1.z, rc.p1.x, rc.p1.y, rc.p1.z, x, y);
       }
     }
   }
-  std::printf("SweptMove turning random: %d hits, %d misses, %d grazing skipped, %d failures; "
-              "worst |kernel - reference| = %.3g mm\n",
-              hits, misses, grazing, failures, worst);
+  std::printf(
+      "SweptMove turning random: %d hits, %d misses, %d grazing skipped, %d failures; "
+      "worst |kernel - reference| = %.3g mm\n",
+      hits, misses, grazing, failures, worst);
   EXPECT_GE(hits, 150);
   EXPECT_GE(misses, 5);
   EXPECT_EQ(SweptMove::unprovenSearches(), unprovenBefore);
@@ -143,14 +149,15 @@ TEST(SweptMove, RotaryMachineCurveAgreesWithBruteForce) {
     const double b0 = 0.6 * u(rng), b1 = b0 + 0.5 * u(rng), c0 = 3 * u(rng), c1 = c0 + 0.8 * u(rng);
     const Vec3 p0{0, 0, 0}, p1{2 * u(rng), 2 * u(rng), 0.3 * u(rng)};
     const bool ac = k % 3 == 0;
-    const SweptMove move(cutter, PoseCurve::rotary(ac ? RotaryKinematics::TableAC
-                                                      : RotaryKinematics::TableBC,
-                                                   p0, p1, b0, b1, c0, c1));
-    const ref::RefCurve curve{p0, p1, [&](double t) {
-                                const double B = b0 + (b1 - b0) * t, C = c0 + (c1 - c0) * t;
-                                if (ac) return Vec3{std::sin(C) * std::sin(B), std::cos(C) * std::sin(B), std::cos(B)};
-                                return Vec3{-std::cos(C) * std::sin(B), std::sin(C) * std::sin(B), std::cos(B)};
-                              }};
+    const SweptMove move(
+        cutter, PoseCurve::rotary(ac ? RotaryKinematics::TableAC : RotaryKinematics::TableBC, p0,
+                                  p1, b0, b1, c0, c1));
+    const ref::RefCurve curve{
+        p0, p1, [&](double t) {
+          const double B = b0 + (b1 - b0) * t, C = c0 + (c1 - c0) * t;
+          if (ac) return Vec3{std::sin(C) * std::sin(B), std::cos(C) * std::sin(B), std::cos(B)};
+          return Vec3{-std::cos(C) * std::sin(B), std::sin(C) * std::sin(B), std::cos(B)};
+        }};
     for (int q = 0; q < 4; ++q) {
       const double x = 1.0 * u(rng) + 0.5 * p1.x, y = 1.0 * u(rng) + 0.5 * p1.y;
       const LowestPoint lp = move.lowestPoint(x, y);
@@ -249,19 +256,21 @@ TEST(PoseCurve, SlerpEndsExactlyAndTurnsAtConstantSpeed) {
   for (double t : {0.1, 0.33, 0.5, 0.9}) {
     EXPECT_NEAR(std::acos(std::clamp(dot(c.axis(t), a0), -1.0, 1.0)), phi * t, 1e-9);
     EXPECT_NEAR(length(c.axis(t) - ref::slerp(a0, a1, t)), 0, 1e-12);
-    // The axis rate is the derivative of the axis.
+    // The axis turns with the cutter's angular velocity: axis' = spin x axis.
     const Vec3 fd = (c.axis(t + 1e-6) - c.axis(t - 1e-6)) / 2e-6;
-    EXPECT_NEAR(length(c.axisRate(t) - fd), 0, 1e-6);
+    EXPECT_NEAR(length(cross(c.spin(t), c.axis(t)) - fd), 0, 1e-6);
   }
 }
 
 // carry() moves a direction fixed to the cutter: the axis itself goes to the axis, and
 // for a rotary curve it agrees with the rotation that the axis formula implies.
 TEST(PoseCurve, CarryMovesTheAxisWithTheCutter) {
-  const PoseCurve slerp =
-      PoseCurve::linear({{0, 0, 0}, normalize(Vec3{0.3, 0, 1})}, {{1, 0, 0}, normalize(Vec3{-0.2, 0.4, 1})});
-  const PoseCurve bc = PoseCurve::rotary(RotaryKinematics::TableBC, {}, {1, 0, 0}, 0.2, 0.7, 0.5, -0.4);
-  const PoseCurve ac = PoseCurve::rotary(RotaryKinematics::TableAC, {}, {1, 0, 0}, -0.3, 0.4, 1.5, 2.4);
+  const PoseCurve slerp = PoseCurve::linear({{0, 0, 0}, normalize(Vec3{0.3, 0, 1})},
+                                            {{1, 0, 0}, normalize(Vec3{-0.2, 0.4, 1})});
+  const PoseCurve bc =
+      PoseCurve::rotary(RotaryKinematics::TableBC, {}, {1, 0, 0}, 0.2, 0.7, 0.5, -0.4);
+  const PoseCurve ac =
+      PoseCurve::rotary(RotaryKinematics::TableAC, {}, {1, 0, 0}, -0.3, 0.4, 1.5, 2.4);
   for (const PoseCurve* c : {&slerp, &bc, &ac}) {
     for (double ta : {0.0, 0.3}) {
       for (double tb : {0.25, 1.0}) {
@@ -270,6 +279,29 @@ TEST(PoseCurve, CarryMovesTheAxisWithTheCutter) {
         const Vec3 p{0.3, -0.2, 0.9}, q{-0.5, 0.1, 0.2};
         EXPECT_NEAR(dot(c->carry(p, ta, tb), c->carry(q, ta, tb)), dot(p, q), 1e-12);
       }
+    }
+  }
+}
+
+// spin() is the angular velocity: a direction fixed to the cutter turns as Omega x n,
+// and spinRate() is its derivative (finite differences of carry() and spin()).
+TEST(PoseCurve, SpinIsTheAngularVelocityOfCarry) {
+  const PoseCurve slerp = PoseCurve::linear({{0, 0, 0}, normalize(Vec3{0.3, 0, 1})},
+                                            {{1, 0, 0}, normalize(Vec3{-0.2, 0.4, 1})});
+  const PoseCurve bc =
+      PoseCurve::rotary(RotaryKinematics::TableBC, {}, {1, 0, 0}, 0.2, 0.7, 0.5, -0.4);
+  const PoseCurve ac =
+      PoseCurve::rotary(RotaryKinematics::TableAC, {}, {1, 0, 0}, -0.3, 0.4, 1.5, 2.4);
+  const Vec3 n = normalize(Vec3{0.3, -0.5, -0.8});
+  for (const PoseCurve* c : {&slerp, &bc, &ac}) {
+    for (double t : {0.2, 0.6}) {
+      const double e = 1e-6;
+      const Vec3 moved = c->carry(n, 0.4, t);
+      const Vec3 rate = (c->carry(n, 0.4, t + e) - c->carry(n, 0.4, t - e)) / (2 * e);
+      EXPECT_NEAR(length(rate - cross(c->spin(t), moved)), 0, 1e-7);
+      const Vec3 spinRate = (c->spin(t + e) - c->spin(t - e)) / (2 * e);
+      EXPECT_NEAR(length(spinRate - c->spinRate(t)), 0, 1e-7);
+      EXPECT_LE(length(c->spin(t)), c->turnRate() + 1e-12);
     }
   }
 }

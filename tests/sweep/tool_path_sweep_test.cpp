@@ -54,9 +54,10 @@ TEST(ToolPathSweep, TurningMoveIsOnePrimitiveBelowEveryStamp) {
   ASSERT_TRUE(moves[0].turning());
 
   // The true rotating cutter stamped at 20001 poses (tip lerp, axis slerp as
-  // CONVENTIONS.md writes it): every stamp is a point of the swept solid, so the exact
-  // height is never above the lowest stamp, and between stamps 5e-5 apart in t the
-  // scallop left is far below 1e-6 mm.
+  // CONVENTIONS.md writes it): every stamp is a point of the swept solid, at or above
+  // its lowest point F, and the primitive returns a height within its proof gap of F
+  // (F <= height <= F + 1e-9 mm), so never more than 1e-9 mm above the lowest stamp;
+  // between stamps 5e-5 apart in t the scallop left is far below 1e-6 mm.
   const int kStamps = 20001;
   double worst = 0;
   for (double x : {-1.0, 0.2, 0.5, 0.8, 1.7}) {
@@ -73,7 +74,7 @@ TEST(ToolPathSweep, TurningMoveIsOnePrimitiveBelowEveryStamp) {
       }
       ASSERT_EQ(lp.hit, std::isfinite(stamped)) << x << " " << y;
       if (!lp.hit) continue;
-      EXPECT_LE(lp.z, stamped + 1e-12) << x << " " << y;
+      EXPECT_LE(lp.z, stamped + 1e-9) << x << " " << y;
       EXPECT_GE(lp.z, stamped - 1e-6) << x << " " << y;
       worst = std::max(worst, stamped - lp.z);
     }

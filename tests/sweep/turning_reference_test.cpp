@@ -38,13 +38,15 @@ RefHit turningLowest(const RefCutter& c, const RefCurve& curve, double x, double
     if ((i == 0 || z[size_t(i - 1)] >= zi) && (i + 1 == samples || z[size_t(i + 1)] >= zi))
       minima.push_back(i);
   }
-  std::sort(minima.begin(), minima.end(), [&](int a, int b) { return z[size_t(a)] < z[size_t(b)]; });
+  std::sort(minima.begin(), minima.end(),
+            [&](int a, int b) { return z[size_t(a)] < z[size_t(b)]; });
   RefHit out;
   for (size_t k = 0; k < std::min<size_t>(3, minima.size()); ++k) {
     const int i = minima[k];
     const double lo = double(std::max(0, i - 1)) / (samples - 1);
     const double hi = double(std::min(samples - 1, i + 1)) / (samples - 1);
-    const double best = std::min(z[size_t(i)], -goldenMax([&](double t) { return -F(t); }, lo, hi).second);
+    const double best =
+        std::min(z[size_t(i)], -goldenMax([&](double t) { return -F(t); }, lo, hi).second);
     if (!out.hit || best < out.z) out.hit = true, out.z = best;
   }
   return out;
@@ -60,9 +62,9 @@ TEST(TurningReference, ConstantAxisAgreesWithTheSweptReference) {
   std::uniform_real_distribution<double> u(-1, 1);
   int compared = 0;
   for (int k = 0; k < 40; ++k) {
-    const RefCutter c = makeRefCutter(k % 3 == 0 ? CutterType::Ball
-                                                 : (k % 3 == 1 ? CutterType::Flat : CutterType::Bull),
-                                      3, 1, 12);
+    const RefCutter c = makeRefCutter(
+        k % 3 == 0 ? CutterType::Ball : (k % 3 == 1 ? CutterType::Flat : CutterType::Bull), 3, 1,
+        12);
     const Vec3 axis = [&] {
       Vec3 a{u(rng), u(rng), 1 + u(rng)};
       return a / std::sqrt(dot(a, a));

@@ -51,6 +51,27 @@ TEST(ResourceGuard, SceneLargerThanMemoryIsRefusedBeforeBuilding) {
   EXPECT_NO_THROW(checkSceneFitsMemory(shortMoves(n / 100)));
 }
 
+// The same for a 5-axis path whose axis turns inside every move (one primitive each):
+// a million and more such moves over a large map are refused up front, naming the
+// bytes, rather than built until the kernel's out-of-memory killer stops them.
+TEST(ResourceGuard, TurningMovesLargerThanMemoryAreRefusedBeforeBuilding) {
+  Job job = shortMoves(0);
+  const double available = availableMemoryBytes();
+  const size_t n = std::max<size_t>(1000000, size_t(std::ceil(available / 4000)));
+  Move m;
+  m.from = {{1, 1, -0.2}, normalize(Vec3{0.1, 0, 1})};
+  m.to = {{1.05, 1, -0.2}, normalize(Vec3{0.11, 0, 1})};
+  job.path.moves.assign(n, m);
+  try {
+    checkSceneFitsMemory(job);
+    FAIL() << n << " turning moves were accepted with " << available << " bytes available";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(std::to_string(n) + " cutting moves"), std::string::npos) << what;
+    EXPECT_NE(what.find(" bytes"), std::string::npos) << what;
+  }
+}
+
 TEST(ResourceGuard, MovesAboveTheStockCostNoScene) {
   Job job = shortMoves(size_t(std::ceil(availableMemoryBytes() / 8000)));
   for (Move& m : job.path.moves) m.from.tip.z = m.to.tip.z = 100;  // far above the top

@@ -71,16 +71,16 @@ Vec3 leanedNormal(double x, double y, double leanDeg) {
 
 }  // namespace
 
-std::string freeformClText(const Cutter& cutter, const Box3& stock, double passGap,
-                           double pointGap, double leanDeg) {
+std::string freeformClText(const Cutter& cutter, const Box3& stock, double passGap, double pointGap,
+                           double leanDeg) {
   const FreeformPasses p = freeformPasses(cutter, stock, passGap, pointGap);
   std::string text = "# scallop bench B3: freeform 5-axis finish, x y z i j k per CL point\n";
   char line[160];
   for (double y : p.ys) {
     for (int i = 0; i < p.points; ++i) {
       const Vec3 tip = p.tip(p.x(i), y), a = leanedNormal(p.x(i), y, leanDeg);
-      std::snprintf(line, sizeof line, "%.6f %.6f %.6f %.9f %.9f %.9f\n", tip.x, tip.y, tip.z,
-                    a.x, a.y, a.z);
+      std::snprintf(line, sizeof line, "%.6f %.6f %.6f %.9f %.9f %.9f\n", tip.x, tip.y, tip.z, a.x,
+                    a.y, a.z);
       text += line;
     }
     text += "\n";  // a pass break: the link to the next pass is a rapid
@@ -156,8 +156,8 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
       b.stock.min = {2 - 0.5 * side, -3.25 - 0.5 * side, -27};
       b.stock.max = {2 + 0.5 * side, -3.25 + 0.5 * side, 2};
     }
-    b.grid = gridCovering(b.stock.min.x, b.stock.min.y, b.stock.max.x, b.stock.max.y,
-                          0.01 * coarse);
+    b.grid =
+        gridCovering(b.stock.min.x, b.stock.min.y, b.stock.max.x, b.stock.max.y, 0.01 * coarse);
     b.description = "mount_rush ball R3 drop-cutter raster (OpenCAMLib), 3-axis CAM output";
   } else {
     throw InputError("--case", "unknown case \"" + name + "\"; expected B1, B2, B3, B3c or B4");

@@ -56,8 +56,8 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
 //  - makeFreeformPath: the same tips with one axis per move, the normal at its
 //    midpoint (B3c, the constant-axis version kept for comparison): the axis jumps at
 //    every CL point and each move end leaves its own dimple.
-std::string freeformClText(const Cutter& cutter, const Box3& stock, double passGap,
-                           double pointGap, double leanDeg);
+std::string freeformClText(const Cutter& cutter, const Box3& stock, double passGap, double pointGap,
+                           double leanDeg);
 ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGap,
                           double moveLength, double leanDeg);
 double freeformHeight(double x, double y);

@@ -5,7 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "raycast/swept_scene.h"
+#include "raycast/simulation.h"
 #include "sweep/input_error.h"
 #include "tools/io/job.h"
 
@@ -66,32 +66,10 @@ void checkRasterFitsMemory(const Job& job) {
 }
 
 void checkSceneFitsMemory(const Job& job) {
-  // The culling scene (raycast/swept_scene.cpp) cuts each move's xy box into tiles of
-  // side cullingTileSide() and keeps those the cutter reaches below the stock top.
-  // Measured (1e6 short 3-axis moves, ball R = 1: 33.8e6 tiles, 18.5 GB peak, before
-  // short moves got 16 tiles instead of 64): ~500 bytes a tile (box, planes, Embree
-  // BVH) and about half the tile grid kept; plus the move, its swept segment and its
-  // file line. An estimate, used only
-  // to refuse what clearly cannot run; moves that turn the axis are subdivided into
-  // more segments than counted here, so it errs low, never high.
-  constexpr double kBytesPerTile = 500, kTilesKept = 0.5, kBytesPerMove = 400;
-  const double R = job.cutter.radius, flute = job.cutter.fluteLength;
-  const double top = job.stock.max.z;
-  double need = 0;
+  // The scene's own estimate (raycast/simulation.h), made from the moves before anything
+  // is built: it errs high, never low, so what it accepts is never killed for memory.
   size_t moves = 0;
-  for (const Move& m : job.path.moves) {
-    if (m.rapid || std::fmin(m.from.tip.z, m.to.tip.z) - R - flute >= top) continue;
-    const double lean =
-        std::fmax(std::hypot(m.from.axis.x, m.from.axis.y), std::hypot(m.to.axis.x, m.to.axis.y));
-    const double reach = 2 * (R + flute * lean);
-    const double w = std::fabs(m.to.tip.x - m.from.tip.x) + reach;
-    const double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
-    const double length =
-        std::hypot(m.to.tip.x - m.from.tip.x, m.to.tip.y - m.from.tip.y, m.to.tip.z - m.from.tip.z);
-    const double T = cullingTileSide(R, length, w * h, SceneOptions());
-    need += kBytesPerMove + kTilesKept * kBytesPerTile * std::ceil(w / T) * std::ceil(h / T);
-    ++moves;
-  }
+  const double need = estimateSceneBytes(job.cutter, job.path, job.stock.max.z, &moves);
   const double available = availableMemoryBytes();
   if (need > 0.8 * available) {
     std::ostringstream msg;

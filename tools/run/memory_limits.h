@@ -1,7 +1,5 @@
 // Memory limits: a run is refused, before its long computation, when what it would
 // hold cannot fit in the memory available, with a message naming the bytes it needs.
-// Each check is an estimate that errs low, never high: it refuses only what clearly
-// cannot run.
 #pragma once
 
 #include <string>
@@ -21,9 +19,8 @@ void checkGridFitsMemory(const GridSpec& grid, const std::string& field);
 // Refuses a raster whose moves alone would not fit in memory, before generating it.
 void checkRasterFitsMemory(const Job& job);
 
-// Refuses a path whose exact simulation's culling scene would not fit in memory (an
-// estimate from the moves' footprints, measured costs in memory_limits.cpp), naming
-// the bytes.
+// Refuses a path whose exact simulation's culling scene would not fit in memory (the
+// scene's own estimate, estimateSceneBytes in raycast/simulation.h), naming the bytes.
 void checkSceneFitsMemory(const Job& job);
 
 }  // namespace scallop

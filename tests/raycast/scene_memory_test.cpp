@@ -1,0 +1,72 @@
+// The culling scene's memory estimate (estimateSceneBytes), made before a scene is
+// built, against the memory a built scene really takes: it must never err low (a job
+// it accepts must not be killed for memory) and should not err absurdly high.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "raycast/simulation.h"
+
+namespace scallop {
+namespace {
+
+long peakKb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  long kb = -1;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) kb = std::stol(line.substr(6));
+  return kb;
+}
+
+// A 5-axis CAM-like path of `passes` x 400 turning moves of 0.05 mm (the axis at every
+// CL point, leaned from the normal of a wavy surface), bull R3 r1.
+ToolPath turningPath(int passes) {
+  auto pose = [](double x, double y) {
+    const Vec3 n = normalize(Vec3{-0.3 * std::cos(x), 0.2 * std::sin(y), 1});
+    return Pose{{x, y, 0.3 * std::sin(x) + 0.2 * std::cos(y)}, normalize(n + Vec3{0.09, 0, 0})};
+  };
+  ToolPath path;
+  for (int k = 0; k < passes; ++k)
+    for (int i = 0; i < 400; ++i)
+      path.moves.push_back(Move{pose(0.05 * i, 0.5 * k), pose(0.05 * (i + 1), 0.5 * k), false});
+  return path;
+}
+
+TEST(SceneMemory, EstimateIsAtLeastWhatTheSceneTakes) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "peak memory is not meaningful under AddressSanitizer";
+#endif
+  const Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);
+  const ToolPath path = turningPath(100);  // 40,000 turning moves
+  Box3 stock;
+  stock.extend({0, 0, -2});
+  stock.extend({20, 50, 1});
+  size_t moves = 0;
+  const double estimate = estimateSceneBytes(cutter, path, stock.max.z, &moves);
+  ASSERT_EQ(moves, 40000u);
+  // In a child process, so that the peak resident size measures this build alone.
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const long before = peakKb();
+    const std::unique_ptr<SweptScene> scene = buildScene(cutter, path, stock, 0.01);
+    const double built = double(peakKb() - before) * 1024;
+    std::fprintf(stderr,
+                 "scene of %zu turning moves: %.0f bytes built (%.0f a move), %.0f "
+                 "estimated (%.2fx)\n",
+                 moves, built, built / double(moves), estimate, estimate / built);
+    _exit(built <= estimate && estimate <= 3 * built ? 0 : 1);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "estimate " << estimate;
+}
+
+}  // namespace
+}  // namespace scallop
