@@ -25,6 +25,7 @@
 #include "tools/io/job.h"
 #include "tools/io/stl_io.h"
 #include "tools/io/tool_path_file.h"
+#include "tools/run/job_loader.h"
 
 namespace scallop::fuzz {
 
@@ -43,7 +44,7 @@ inline std::string writeTemp(const std::string& bytes, const std::string& suffix
 // A job file, parsed with the memory check on, as `scallop simulate JOB.json` does (a
 // raster job also builds its tool path).
 inline void fuzzJob(const std::string& bytes) {
-  parseJob(bytes, "fuzz.json", true);
+  loadJob(bytes, "fuzz.json", true);
 }
 
 // An STL surface: binary or ASCII, then the welding and validation of readStl.
@@ -82,7 +83,7 @@ inline void fuzzGsf(const std::string& bytes) {
 // beyond 1 km first (checkPathMagnitudes).
 inline void fuzzSimulateCl(const std::string& bytes) {
   const ToolPath path = parseToolPath(bytes, "fuzz.txt");
-  checkPathMagnitudes(path, {}, "fuzz.txt");  // as parseJob does for every path file
+  checkPathMagnitudes(path, {}, "fuzz.txt");  // as loadJobInputs does for every path file
   // Runs must stay well under the 10 s timeout with sanitizers: at most 16 moves, and
   // turning axes subdivided to 0.01 mm, not 1e-4 (three 90-degree turns make 22,000
   // segments at 1e-4 mm, 5 s even without sanitizers: real work, not a hang).

@@ -19,8 +19,8 @@
 namespace scallop {
 namespace {
 
-constexpr double kTol = 1e-6;         // mm, CONVENTIONS.md "Units and frames"
-constexpr double kSupportTol = 1e-9;  // mm, the culling plane must really support
+constexpr double kTol = kHeightToleranceMm;  // CONVENTIONS.md "Units and frames"
+constexpr double kSupportTol = 1e-9;         // mm, the culling plane must really support
 const Vec3 kUp{0, 0, 1};
 
 ref::RefCutter refOf(CutterType type, double R, double r, double L) {

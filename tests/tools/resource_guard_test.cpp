@@ -14,6 +14,7 @@
 #include "tests/tools/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/io/tool_path_file.h"
+#include "tools/run/memory_limits.h"
 
 namespace scallop {
 namespace {

@@ -13,6 +13,7 @@
 #include "tools/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/io/stl_io.h"
+#include "tools/run/job_loader.h"
 
 namespace scallop {
 namespace {

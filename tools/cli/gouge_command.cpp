@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/gouge_check.h"
+#include "sweep/constants.h"
 #include "sweep/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/atomic_file.h"
@@ -26,9 +27,9 @@ using nlohmann::json;
 
 namespace {
 
-// Lengths are bounded by 1 km (1e6 mm) as everywhere in scallop.
+// Lengths are bounded by 1 km (kMaxMagnitudeMm) as everywhere in scallop.
 void requirePositive(double v, const char* field, const char* what) {
-  if (!(v > 0) || !(v <= 1e6))
+  if (!(v > 0) || !(v <= kMaxMagnitudeMm))
     throw InputError(field, fmt::format("{} must be in (0, 1e6], got {}", what, v));
 }
 

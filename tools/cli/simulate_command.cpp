@@ -11,6 +11,7 @@
 #include "tools/cli/interrupt.h"
 #include "tools/cli/progress.h"
 #include "tools/io/job.h"
+#include "tools/run/job_loader.h"
 #include "tools/run/report.h"
 
 namespace scallop {
@@ -63,7 +64,7 @@ int runSimulate(const SimulateArgs& args) {
                      "stock and grid");
   // A grid too large to hold is accepted here: the run computes it in bands.
   const bool exact = run.method == "exact";
-  const Job job = args.jobFile.empty() ? parseJob(defaultJobJson(), "built-in default job", !exact)
+  const Job job = args.jobFile.empty() ? loadJob(defaultJobJson(), "built-in default job", !exact)
                                        : loadJobFile(args.jobFile, !exact, args.pathFile);
   ProgressBar bar("simulating");
   RunSettings settings = run;

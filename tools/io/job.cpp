@@ -9,9 +9,8 @@
 #include <sstream>
 #include <vector>
 
-#include "raycast/simulation.h"
+#include "sweep/constants.h"
 #include "sweep/input_error.h"
-#include "tools/io/stl_io.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
@@ -22,10 +21,8 @@ namespace {
 
 // --- Strict field access: every message names the field and what it should be. ----
 
-// Every number of a job is a length in mm, an angle in degrees or a tolerance: none is
-// meaningful beyond 1 km, and bounding them keeps squares and products (and the
-// float32 heights written) far from overflow, where a wrong map would be silent.
-constexpr double kMaxMagnitude = 1e6;
+// Every number of a job is a length in mm, an angle in degrees or a tolerance, bounded
+// by kMaxMagnitudeMm (sweep/constants.h).
 
 // Rejects an object holding the same key twice (JSON allows it, nlohmann keeps the
 // last silently), naming the field path, e.g. "grid.spacing: duplicate key".
@@ -84,7 +81,7 @@ double number(const json& obj, const std::string& key, const std::string& field,
   if (!v.is_number()) throw InputError(field, "expected a number, got " + v.dump());
   const double d = v.get<double>();
   if (!std::isfinite(d)) throw InputError(field, "expected a finite number");
-  if (std::fabs(d) > kMaxMagnitude)
+  if (std::fabs(d) > kMaxMagnitudeMm)
     throw InputError(field, "must be within +-1e6 (mm: 1 km), got " + v.dump());
   return d;
 }
@@ -96,7 +93,7 @@ Vec3 point(const json& obj, const std::string& key, const std::string& field) {
     throw InputError(field, "expected [x, y, z] (three numbers, mm), got " + v.dump());
   const Vec3 p{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
   if (!isFinite(p)) throw InputError(field, "coordinates must be finite");
-  if (std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))) > kMaxMagnitude)
+  if (std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))) > kMaxMagnitudeMm)
     throw InputError(field, "coordinates must be within +-1e6 mm (1 km), got " + v.dump());
   return p;
 }
@@ -156,32 +153,6 @@ RasterSpec parseRaster(const json& r) {
   return spec;
 }
 
-// makeRaster holds every move (up to its own limit of 5e7): refuse, before generating
-// it, a raster whose moves alone would not fit in memory. Counts as sweep/raster.cpp
-// does; invalid values are left to makeRaster's messages.
-void checkRasterFitsMemory(const Job& job) {
-  const RasterSpec& r = job.raster;
-  if (!(r.stepOver > 0) || !(r.segmentLength >= 0)) return;
-  const bool alongX = r.direction == 'x';
-  const double cross =
-      alongX ? job.stock.max.y - job.stock.min.y : job.stock.max.x - job.stock.min.x;
-  const double feed =
-      (alongX ? job.stock.max.x - job.stock.min.x : job.stock.max.y - job.stock.min.y) +
-      2 * job.cutter.radius + 2;
-  const double passes = std::floor(cross / r.stepOver + 1e-9) + 1;
-  const double moves = passes * (r.segmentLength > 0 ? std::ceil(feed / r.segmentLength) + 1 : 2);
-  const double need = moves * double(sizeof(Move));
-  const double available = availableMemoryBytes();
-  if (need > 0.8 * available) {
-    std::ostringstream msg;
-    msg << "gives " << moves << " moves, which need " << std::setprecision(15) << need
-        << " bytes of memory, but only " << std::fixed << std::setprecision(1)
-        << available / double(1ull << 30) << " GiB are available";
-    throw InputError(r.segmentLength > 0 ? "path.raster.segment_length" : "path.raster.step_over",
-                     msg.str());
-  }
-}
-
 // The position of a byte offset as "line L, column C" for malformed-JSON messages.
 std::string lineColumn(const std::string& s, size_t byte) {
   size_t line = 1, col = 1;
@@ -213,7 +184,7 @@ GridSpec Job::grid() const {
 void checkPathMagnitudes(const ToolPath& path, const std::vector<int64_t>& lines,
                          const std::string& file) {
   auto far = [](const Vec3& p) {
-    return std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))) > kMaxMagnitude;
+    return std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))) > kMaxMagnitudeMm;
   };
   for (size_t k = 0; k < path.moves.size(); ++k) {
     const Move& m = path.moves[k];
@@ -226,53 +197,7 @@ void checkPathMagnitudes(const ToolPath& path, const std::vector<int64_t>& lines
   }
 }
 
-double availableMemoryBytes() {
-  double available = 0;
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  double kb = 0;
-  std::string unit;
-  while (meminfo >> key >> kb >> unit)
-    if (key == "MemAvailable:") available = kb * 1024;
-  return available > 0 ? available : 8.0 * (1ull << 30);
-}
-
-void checkSceneFitsMemory(const Job& job) {
-  // The scene's own estimate (raycast/simulation.h), made from the moves before anything
-  // is built: it errs high, never low, so what it accepts is never killed for memory.
-  size_t moves = 0;
-  const double need = estimateSceneBytes(job.cutter, job.path, job.stock.max.z, &moves);
-  const double available = availableMemoryBytes();
-  if (need > 0.8 * available) {
-    std::ostringstream msg;
-    msg << "the exact simulation of " << moves << " cutting moves needs about "
-        << std::setprecision(need < 1e15 ? 15 : 3) << need << " bytes (" << std::fixed
-        << std::setprecision(1) << need / double(1ull << 30)
-        << " GiB) of memory for its culling scene, but only " << available / double(1ull << 30)
-        << " GiB are available; split the path into several jobs (--tiled bounds only the "
-           "height map's memory, not the scene's)";
-    throw InputError(job.source + ": path", msg.str());
-  }
-}
-
-void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
-  // Heights are held in double, plus one float32 row buffer per image while writing.
-  const double cells = double(grid.nx) * double(grid.ny);
-  const double need = cells * (sizeof(double) + sizeof(float));
-  const double available = availableMemoryBytes();
-  if (need > 0.8 * available) {
-    std::ostringstream msg;
-    msg.precision(3);
-    msg << "a " << grid.nx << " x " << grid.ny << " grid needs " << need / double(1ull << 30)
-        << " GiB (" << std::fixed << std::setprecision(0) << need << " bytes) of memory, but only "
-        << std::defaultfloat << std::setprecision(3) << available / double(1ull << 30)
-        << " GiB are available; use a larger spacing, a smaller stock, or --method exact with "
-           "--tiled (bands of rows, bounded memory)";
-    throw InputError(field, msg.str());
-  }
-}
-
-Job parseJob(const std::string& textIn, const std::string& source, bool checkMemory,
+Job parseJob(const std::string& textIn, const std::string& source,
              const std::string& pathOverride) {
   json doc;
   OpenObjects openObjects;
@@ -305,7 +230,8 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
     Job job;
     job.source = source;
     // Without "tool" the path file's CUTTER/ statement defines it (below).
-    if (doc.contains("tool")) job.cutter = parseTool(requireObject(doc, "tool", "tool"));
+    job.hasTool = doc.contains("tool");
+    if (job.hasTool) job.cutter = parseTool(requireObject(doc, "tool", "tool"));
     namespace fs = std::filesystem;
     auto besideJob = [&](const std::string& file) {
       fs::path p(file);
@@ -329,7 +255,6 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
     const double nx = std::ceil((job.stock.max.x - job.stock.min.x) / job.spacing);
     const double ny = std::ceil((job.stock.max.y - job.stock.min.y) / job.spacing);
     if (nx * ny > 9e15) throw InputError("grid.spacing", "gives more cells than can be counted");
-    if (checkMemory) checkGridFitsMemory(job.grid(), "grid.spacing");
 
     if (doc.contains("design")) {
       const json& design = requireObject(doc, "design", "design");
@@ -338,7 +263,6 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
       job.gougeTolerance =
           number(design, "gouge_tolerance", "design.gouge_tolerance", &job.gougeTolerance);
       if (job.gougeTolerance < 0) throw InputError("design.gouge_tolerance", "must be >= 0 mm");
-      job.design = std::make_shared<const TriangleMesh>(readStl(job.designFile));
     }
 
     const json pathDoc =
@@ -352,47 +276,21 @@ Job parseJob(const std::string& textIn, const std::string& source, bool checkMem
     if (path.contains("raster")) {
       job.isRaster = true;
       job.raster = parseRaster(requireObject(path, "raster", "path.raster"));
-      checkRasterFitsMemory(job);
-      job.path = makeRaster(job.cutter, job.stock, job.raster);
     } else {
       const std::string file = text(path, "file", "path.file");
       // --path names a file from the working directory, a job's file is beside the job.
       job.pathFile = pathOverride.empty() ? besideJob(file) : file;
-      ToolPathFile read = readToolPathFile(job.pathFile);
-      if (!doc.contains("tool") && !read.cutter)
-        throw InputError(
-            "tool", "missing; expected an object (or a CUTTER/ statement in " + job.pathFile + ")");
-      if (!doc.contains("tool")) job.cutter = *read.cutter;
-      if (doc.contains("tool") && read.cutter &&
-          (read.cutter->type != job.cutter.type || read.cutter->radius != job.cutter.radius ||
-           read.cutter->cornerRadius != job.cutter.cornerRadius))
-        read.warnings.add(job.pathFile,
-                          "its CUTTER/ differs from the job's \"tool\"; the job's "
-                          "tool is used");
-      checkPathMagnitudes(read.path, read.moveLines, job.pathFile);
-      warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile);
-      job.path = std::move(read.path);
-      job.moveLines = std::move(read.moveLines);
-      job.pathWarnings = std::move(read.warnings);
-      job.pathFormat = read.format;
     }
     return job;
   } catch (const InputError& e) {
-    // Lead every field error with the file it came from.
-    if (e.where().rfind(source, 0) == 0) throw;
-    throw InputError(source + ": " + e.where(), e.reason());
+    throwFromJob(e, source);
   }
 }
 
-Job loadJobFile(const std::string& path, bool checkMemory, const std::string& pathOverride) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, "is a folder, expected a job file (JSON)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the job file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseJob(text.str(), path, checkMemory, pathOverride);
+void throwFromJob(const InputError& e, const std::string& source) {
+  // Lead every field error with the file it came from.
+  if (e.where().rfind(source, 0) == 0) throw e;
+  throw InputError(source + ": " + e.where(), e.reason());
 }
 
 json jobToJson(const Job& job) {

@@ -18,15 +18,18 @@
 
 namespace scallop {
 
+class InputError;
+
 struct Job {
   std::string source;  // file name, or "built-in default job"
+  bool hasTool = false;  // "tool" was given; otherwise the path file's CUTTER/ is the tool
   Cutter cutter;
   Box3 stock;
   double spacing = 0;           // grid cell side, mm
   bool isRaster = false;
   RasterSpec raster;     // when isRaster
   std::string pathFile;  // when not: the tool-path file, resolved to a path
-  ToolPath path;         // built from either
+  ToolPath path;         // built from either by loadJobInputs (tools/run/job_loader.h)
   // From a path file: its format, the file line of each move and the warnings
   // (unknown statements, rapids into the stock), echoed into report.json.
   std::string pathFormat;
@@ -34,7 +37,7 @@ struct Job {
   PathWarnings pathWarnings;
   // "design": {"stl": FILE, "gouge_tolerance": mm}: the part the path should make.
   std::string designFile;                      // resolved; empty without a design
-  std::shared_ptr<const TriangleMesh> design;  // read when the job is parsed
+  std::shared_ptr<const TriangleMesh> design;  // read by loadJobInputs
   double gougeTolerance = 1e-3;                // mm below the design that is a gouge
 
   GridSpec grid() const;
@@ -43,31 +46,23 @@ struct Job {
 // The built-in default job: a bull cutter raster with lead (the README's main job).
 const char* defaultJobJson();
 
-// Parses and validates; `source` names the file in messages and resolves relative
-// tool-path files. Throws InputError. Without `checkMemory` a grid too large to hold is
-// accepted (the caller computes it in bands, tools/run/tiled_simulation.h).
+// Parses and validates the text of a job file, and only that: no file is read and no
+// path is built (tools/run/job_loader.h does both). `source` names the file in messages
+// and resolves the relative file names of "path" and "design". Throws InputError.
 // A non-empty `pathOverride` (simulate --path FILE) replaces the job's "path".
 // "tool" may be left out when the path file defines the cutter (APT CUTTER/).
-Job parseJob(const std::string& text, const std::string& source, bool checkMemory = true,
+Job parseJob(const std::string& text, const std::string& source,
              const std::string& pathOverride = "");
-Job loadJobFile(const std::string& path, bool checkMemory = true,
-                const std::string& pathOverride = "");
 
-// Refuses grids whose heights would not fit in memory, naming the size they need.
-void checkGridFitsMemory(const GridSpec& grid, const std::string& field);
-
-// Refuses a path whose exact simulation's culling scene would not fit in memory (an
-// estimate from the moves' footprints, measured costs in job.cpp), naming the bytes.
-void checkSceneFitsMemory(const Job& job);
+// Rethrows `e`, an error met while reading the job from `source`, with `source`
+// leading its place (unless it already does): "job.json: grid.spacing: ...".
+[[noreturn]] void throwFromJob(const InputError& e, const std::string& source);
 
 // Refuses a path with a tip beyond +-1e6 mm (1 km) in x, y or z, as the job's own
 // numbers are bounded: the geometry's squares and tile counts stay far from
 // overflow. Names "file:line" from `lines` (ToolPathFile::moveLines) when given.
 void checkPathMagnitudes(const ToolPath& path, const std::vector<int64_t>& lines,
                          const std::string& file);
-
-// /proc/meminfo's MemAvailable, bytes (8 GiB when it cannot be read).
-double availableMemoryBytes();
 
 // The job as JSON (the inputs echoed into report.json).
 nlohmann::json jobToJson(const Job& job);

@@ -73,15 +73,14 @@ double writeDeviationPng(const DesignComparison& c, const std::string& path,
       1, std::min((400 + std::max(w, h) - 1) / std::max(w, h), maxPixels / std::max(w, h)));
 
   constexpr int s = 2, pad = 16, barW = 24;
-  const int textH = png::kGlyphH * s;
-  std::string heading = title;
-  for (char& ch : heading) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+  const int textH = png::kCapHeightPx * s;
+  const std::string& heading = title;
   const int mapW = w * up, mapH = h * up;
   const int mapX = pad, mapY = pad + textH + 12;
   const int barH = std::max(mapH, 200), barX = mapX + mapW + 24, labelX = barX + barW + 10;
   const bool micro = limit < 0.5;
   const double unitPerMm = micro ? 1000.0 : 1.0;
-  const std::string unit = micro ? std::string(1, png::kMicro) + "m" : "mm";
+  const std::string unit = micro ? "\u00b5m" : "mm";
   const int decimals = std::max(0, -int(std::floor(std::log10(limit * unitPerMm / 2) + 1e-9)));
   std::vector<std::pair<double, std::string>> ticks;
   for (int t = 2; t >= -2; --t) {
@@ -90,10 +89,10 @@ double writeDeviationPng(const DesignComparison& c, const std::string& path,
   }
   int labelW = 0;
   for (const auto& t : ticks) labelW = std::max(labelW, png::textWidth(t.second, s));
-  const std::string key1 = "BLUE: MATERIAL LEFT (MACHINED ABOVE DESIGN)";
+  const std::string key1 = "blue: material left (machined above design)";
   const std::string key2 =
-      fmt::format("RED: BELOW DESIGN. O: GOUGE DEEPER THAN {:g} {}", c.tolerance * unitPerMm, unit);
-  const std::string key3 = "GREY: NO DESIGN SURFACE";
+      fmt::format("red: below design; o: gouge deeper than {:g} {}", c.tolerance * unitPerMm, unit);
+  const std::string key3 = "grey: no design surface";
   const int keyY = mapY + barH + 14;
   const int width =
       std::max({labelX + labelW + pad, pad + png::textWidth(heading, s) + pad,

@@ -2,9 +2,13 @@
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
+#include <ft2build.h>
+#include FT_FREETYPE_H
 
-#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <vector>
 
 #include "sweep/input_error.h"
 #include "tools/io/atomic_file.h"
@@ -13,87 +17,102 @@ namespace scallop::png {
 
 namespace {
 
-// 5x7 glyphs, one byte per row from the top, bit 4 = leftmost column.
-struct Glyph {
-  char code;
-  uint8_t rows[7];
+// DejaVu Sans from Debian's fonts-dejavu-core (scripts/install-deps.sh).
+constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+// The face, loaded once. FreeType faces are not thread-safe, so every use holds the lock.
+struct Font {
+  std::mutex lock;
+  FT_Library library = nullptr;
+  FT_Face face = nullptr;
+
+  Font() {
+    if (FT_Init_FreeType(&library) != 0) return;
+    if (FT_New_Face(library, kFontFile, 0, &face) != 0) {
+      face = nullptr;
+      // A picture without labels is still worth writing; say once why they are missing.
+      std::fprintf(stderr,
+                   "scallop: warning: cannot load the font %s (fonts-dejavu-core); "
+                   "pictures are drawn without text\n",
+                   kFontFile);
+    }
+  }
+  ~Font() {
+    if (face) FT_Done_Face(face);
+    if (library) FT_Done_FreeType(library);
+  }
 };
 
-constexpr Glyph kFont[] = {
-    {'0', {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}},
-    {'1', {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E}},
-    {'2', {0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F}},
-    {'3', {0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E}},
-    {'4', {0x02, 0x06, 0x0A, 0x12, 0x1F, 0x02, 0x02}},
-    {'5', {0x1F, 0x10, 0x1E, 0x01, 0x01, 0x11, 0x0E}},
-    {'6', {0x06, 0x08, 0x10, 0x1E, 0x11, 0x11, 0x0E}},
-    {'7', {0x1F, 0x01, 0x02, 0x04, 0x08, 0x08, 0x08}},
-    {'8', {0x0E, 0x11, 0x11, 0x0E, 0x11, 0x11, 0x0E}},
-    {'9', {0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C}},
-    {'A', {0x0E, 0x11, 0x11, 0x11, 0x1F, 0x11, 0x11}},
-    {'B', {0x1E, 0x11, 0x11, 0x1E, 0x11, 0x11, 0x1E}},
-    {'C', {0x0E, 0x11, 0x10, 0x10, 0x10, 0x11, 0x0E}},
-    {'D', {0x1C, 0x12, 0x11, 0x11, 0x11, 0x12, 0x1C}},
-    {'E', {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x1F}},
-    {'F', {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x10}},
-    {'G', {0x0E, 0x11, 0x10, 0x17, 0x11, 0x11, 0x0F}},
-    {'H', {0x11, 0x11, 0x11, 0x1F, 0x11, 0x11, 0x11}},
-    {'I', {0x0E, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E}},
-    {'J', {0x07, 0x02, 0x02, 0x02, 0x02, 0x12, 0x0C}},
-    {'K', {0x11, 0x12, 0x14, 0x18, 0x14, 0x12, 0x11}},
-    {'L', {0x10, 0x10, 0x10, 0x10, 0x10, 0x10, 0x1F}},
-    {'M', {0x11, 0x1B, 0x15, 0x15, 0x11, 0x11, 0x11}},
-    {'N', {0x11, 0x11, 0x19, 0x15, 0x13, 0x11, 0x11}},
-    {'O', {0x0E, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E}},
-    {'P', {0x1E, 0x11, 0x11, 0x1E, 0x10, 0x10, 0x10}},
-    {'Q', {0x0E, 0x11, 0x11, 0x11, 0x15, 0x12, 0x0D}},
-    {'R', {0x1E, 0x11, 0x11, 0x1E, 0x14, 0x12, 0x11}},
-    {'S', {0x0F, 0x10, 0x10, 0x0E, 0x01, 0x01, 0x1E}},
-    {'T', {0x1F, 0x04, 0x04, 0x04, 0x04, 0x04, 0x04}},
-    {'U', {0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E}},
-    {'V', {0x11, 0x11, 0x11, 0x11, 0x11, 0x0A, 0x04}},
-    {'W', {0x11, 0x11, 0x11, 0x15, 0x15, 0x15, 0x0A}},
-    {'X', {0x11, 0x11, 0x0A, 0x04, 0x0A, 0x11, 0x11}},
-    {'Y', {0x11, 0x11, 0x11, 0x0A, 0x04, 0x04, 0x04}},
-    {'Z', {0x1F, 0x01, 0x02, 0x04, 0x08, 0x10, 0x1F}},
-    {'m', {0x00, 0x00, 0x1A, 0x15, 0x15, 0x11, 0x11}},
-    {'u', {0x00, 0x00, 0x11, 0x11, 0x11, 0x13, 0x0D}},
-    {kMicro, {0x00, 0x00, 0x11, 0x11, 0x13, 0x1D, 0x10}},
-    {'.', {0x00, 0x00, 0x00, 0x00, 0x00, 0x0C, 0x0C}},
-    {',', {0x00, 0x00, 0x00, 0x00, 0x0C, 0x04, 0x08}},
-    {'-', {0x00, 0x00, 0x00, 0x1F, 0x00, 0x00, 0x00}},
-    {'+', {0x00, 0x04, 0x04, 0x1F, 0x04, 0x04, 0x00}},
-    {':', {0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x0C, 0x00}},
-    {'=', {0x00, 0x00, 0x1F, 0x00, 0x1F, 0x00, 0x00}},
-    {'/', {0x01, 0x01, 0x02, 0x04, 0x08, 0x10, 0x10}},
-    {'_', {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x1F}},
-    {'(', {0x02, 0x04, 0x08, 0x08, 0x08, 0x04, 0x02}},
-    {')', {0x08, 0x04, 0x02, 0x02, 0x02, 0x04, 0x08}},
-    {'#', {0x0A, 0x0A, 0x1F, 0x0A, 0x1F, 0x0A, 0x0A}},
-    {'?', {0x0E, 0x11, 0x01, 0x02, 0x04, 0x00, 0x04}},
-    {' ', {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}},
-};
+Font& font() {
+  static Font f;
+  return f;
+}
 
-const Glyph& glyphFor(char c) {
-  for (const Glyph& g : kFont)
-    if (g.code == c) return g;
-  // Other lower-case letters share the capitals; anything else shows as '?'.
-  const char upper = char(std::toupper(static_cast<unsigned char>(c)));
-  for (const Glyph& g : kFont)
-    if (g.code == upper) return g;
-  return glyphFor('?');
+// Unicode code points of UTF-8 text; a malformed byte stands for itself.
+std::vector<char32_t> codePoints(const std::string& s) {
+  std::vector<char32_t> out;
+  for (size_t i = 0; i < s.size();) {
+    const unsigned char b = static_cast<unsigned char>(s[i]);
+    const int extra = b >= 0xF0 ? 3 : b >= 0xE0 ? 2 : b >= 0xC0 ? 1 : 0;
+    char32_t cp = extra == 0 ? b : char32_t(b & (0x3F >> extra));
+    bool ok = i + size_t(extra) < s.size() + (extra == 0 ? 1 : 0);
+    for (int k = 1; ok && k <= extra; ++k) {
+      const unsigned char c = static_cast<unsigned char>(s[i + size_t(k)]);
+      ok = (c & 0xC0) == 0x80;
+      cp = (cp << 6) | (c & 0x3F);
+    }
+    out.push_back(ok ? cp : char32_t(b));
+    i += ok ? size_t(extra) + 1 : 1;
+  }
+  return out;
+}
+
+int pixelSize(int scale) {
+  return kTextPx * scale;
 }
 
 }  // namespace
 
+// Text goes through FreeType itself: OpenImageIO's render_text would do the same, but
+// the OpenImageIO of Debian 12 (2.4) decodes UTF-8 wrongly and draws "µ" as "5".
 void Canvas::text(int x, int y, const std::string& s, int scale, Rgb c) {
-  for (char ch : s) {
-    const Glyph& g = glyphFor(ch);
-    for (int row = 0; row < kGlyphH; ++row)
-      for (int col = 0; col < kGlyphW; ++col)
-        if (g.rows[row] & (0x10 >> col)) fill(x + col * scale, y + row * scale, scale, scale, c);
-    x += kAdvance * scale;
+  Font& f = font();
+  std::lock_guard<std::mutex> hold(f.lock);
+  if (!f.face || FT_Set_Pixel_Sizes(f.face, 0, FT_UInt(pixelSize(scale))) != 0) return;
+  // (x, y) is the top of the capitals: the baseline is one cap height lower.
+  const int baseline = y + kCapHeightPx * scale;
+  int penX = x;
+  for (char32_t cp : codePoints(s)) {
+    if (FT_Load_Char(f.face, FT_ULong(cp), FT_LOAD_RENDER) != 0) continue;
+    const FT_GlyphSlot g = f.face->glyph;
+    const FT_Bitmap& bm = g->bitmap;
+    for (unsigned row = 0; row < bm.rows; ++row)
+      for (unsigned col = 0; col < bm.width; ++col) {
+        const int cover = bm.buffer[size_t(row) * size_t(std::abs(bm.pitch)) + col];
+        if (cover == 0) continue;
+        const int px = penX + g->bitmap_left + int(col), py = baseline - g->bitmap_top + int(row);
+        if (px < 0 || py < 0 || px >= w_ || py >= h_) continue;
+        uint8_t* p = &px_[(size_t(py) * size_t(w_) + size_t(px)) * 3];
+        const Rgb ink = c;
+        auto mix = [cover](uint8_t under, uint8_t over) {
+          return uint8_t((under * (255 - cover) + over * cover + 127) / 255);
+        };
+        p[0] = mix(p[0], ink.r), p[1] = mix(p[1], ink.g), p[2] = mix(p[2], ink.b);
+      }
+    penX += int(g->advance.x >> 6);
   }
+}
+
+int textWidth(const std::string& s, int scale) {
+  Font& f = font();
+  std::lock_guard<std::mutex> hold(f.lock);
+  if (s.empty() || !f.face || FT_Set_Pixel_Sizes(f.face, 0, FT_UInt(pixelSize(scale))) != 0)
+    return 0;
+  int width = 0;
+  for (char32_t cp : codePoints(s))
+    if (FT_Load_Char(f.face, FT_ULong(cp), FT_LOAD_DEFAULT) == 0)
+      width += int(f.face->glyph->advance.x >> 6);
+  return width;
 }
 
 double niceBelow(double x) {

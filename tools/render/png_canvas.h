@@ -1,7 +1,6 @@
-// Small raster pictures for people: an RGB canvas with a built-in 5x7 bitmap font,
-// shared by preview.png (tools/preview_png.cpp) and the design-deviation picture
-// (tools/render/deviation_png.h). Text uses this font rather than OpenImageIO's render_text,
-// which needs FreeType and a font file that CI machines may not have.
+// Small raster pictures for people: an RGB canvas with anti-aliased text (DejaVu Sans,
+// UTF-8, so labels show µ and °), shared by preview.png (tools/render/preview_png.h)
+// and the design-deviation picture (tools/render/deviation_png.h).
 #pragma once
 
 #include <cstdint>
@@ -18,10 +17,9 @@ constexpr Rgb kBackground{255, 255, 255};
 constexpr Rgb kInk{25, 25, 25};
 constexpr Rgb kFrame{90, 90, 90};
 
-// Stands for the micro sign in label strings (the font is single-byte).
-constexpr char kMicro = '\x01';
-
-constexpr int kGlyphW = 5, kGlyphH = 7, kAdvance = 6;  // font pixels
+// Text at scale 1: the font's pixel size, and the height of its capitals (what a
+// layout reserves for a line of labels; descenders reach a few pixels below it).
+constexpr int kTextPx = 10, kCapHeightPx = 7;
 
 // RGB pixels, row 0 at the top; drawing outside the canvas is clipped.
 class Canvas {
@@ -45,7 +43,8 @@ class Canvas {
     fill(x - 1, y - 1, w + 2, 1, c), fill(x - 1, y + h, w + 2, 1, c);
     fill(x - 1, y, 1, h, c), fill(x + w, y, 1, h, c);
   }
-  // `scale` screen pixels per font pixel; (x, y) is the top-left of the text.
+  // UTF-8 text of kTextPx * scale pixels; (x, y) is the left end of the top of its
+  // capitals. Drawn without text when the font is missing (a warning says so once).
   void text(int x, int y, const std::string& s, int scale, Rgb c);
 
  private:
@@ -53,9 +52,8 @@ class Canvas {
   std::vector<uint8_t> px_;
 };
 
-inline int textWidth(const std::string& s, int scale) {
-  return s.empty() ? 0 : (int(s.size()) * kAdvance - 1) * scale;
-}
+// The advance of `s` drawn by Canvas::text at `scale`, px.
+int textWidth(const std::string& s, int scale);
 
 // Largest 1, 2 or 5 times a power of ten that is <= x (x > 0).
 double niceBelow(double x);

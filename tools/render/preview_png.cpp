@@ -22,10 +22,9 @@ namespace {
 using png::Canvas;
 using png::formatValue;
 using png::kBackground;
+using png::kCapHeightPx;
 using png::kFrame;
-using png::kGlyphH;
 using png::kInk;
-using png::kMicro;
 using png::niceBelow;
 using png::Rgb;
 using png::textWidth;
@@ -132,6 +131,31 @@ std::vector<double> hillShade(const PreviewGrid& p) {
   return factor;
 }
 
+// The colour range: robust percentiles of the cut region, the cells below the highest
+// height (which is the uncut stock top on a simulated map). A strip along the edge that
+// the cutter only grazed, or a few deep spots, would otherwise take most of the colours
+// and leave the scallops in one shade. The range is the 0.5th to the 99.5th percentile,
+// narrowed to Tukey's far fences (3 interquartile ranges beyond the quartiles), so a
+// tail of a few percent of the cells cannot stretch it either. Falls back to the whole
+// range when the cut region is empty or flat; values beyond take the end colours.
+std::pair<double, double> robustRange(const PreviewGrid& p) {
+  const double top = *std::max_element(p.z.begin(), p.z.end());
+  const double bottom = *std::min_element(p.z.begin(), p.z.end());
+  std::vector<double> cut;
+  for (double z : p.z)
+    if (z < top) cut.push_back(z);
+  if (cut.empty()) return {bottom, top};
+  auto quantile = [&cut](double q) {
+    auto it = cut.begin() + long(std::floor(q * double(cut.size() - 1)));
+    std::nth_element(cut.begin(), it, cut.end());
+    return *it;
+  };
+  const double q1 = quantile(0.25), q3 = quantile(0.75), fence = 3 * (q3 - q1);
+  const double lo = std::max(quantile(0.005), q1 - fence);
+  const double hi = std::min(quantile(0.995), q3 + fence);
+  return hi > lo ? std::pair<double, double>{lo, hi} : std::pair<double, double>{bottom, top};
+}
+
 struct Tick {
   double value;
   std::string label;
@@ -144,7 +168,7 @@ std::vector<Tick> colourBarTicks(double zmin, double zmax, int barH, int textH) 
   const double largest = std::max(std::abs(zmin), std::abs(zmax));
   const bool micro = range > 0 ? range < 0.5 : largest < 0.5;
   const double unitPerMm = micro ? 1000.0 : 1.0;
-  const std::string unit = micro ? std::string(1, kMicro) + "m" : "mm";
+  const std::string unit = micro ? "\u00b5m" : "mm";
   if (!(range > 0)) return {{zmin, formatValue(zmin * unitPerMm, micro ? 1 : 4, unit)}};
 
   double step = niceBelow(range * unitPerMm / 3);
@@ -176,16 +200,16 @@ void writePreviewPng(const ZMap& map, const std::string& path, const PreviewOpti
   const int up =
       std::max(1, std::min((options.minPixels + gridLong - 1) / gridLong, maxPixels / gridLong));
   const std::vector<double> light = hillShade(grid);
-  const double zmin = std::isnan(options.zMin) ? map.minHeight() : options.zMin;
-  const double zmax = std::isnan(options.zMax) ? map.maxHeight() : options.zMax;
+  const auto [cutLow, cutHigh] = robustRange(grid);
+  const double zmin = std::isnan(options.zMin) ? cutLow : options.zMin;
+  const double zmax = std::isnan(options.zMax) ? cutHigh : options.zMax;
   const double range = zmax - zmin;
 
   // Layout, px.
   constexpr int s = 2;  // font scale
   constexpr int pad = 16, barW = 24;
-  const int textH = kGlyphH * s;
-  std::string title = options.title;
-  for (char& c : title) c = char(std::toupper(static_cast<unsigned char>(c)));
+  const int textH = kCapHeightPx * s;
+  const std::string& title = options.title;
   const int mapW = grid.w * up, mapH = grid.h * up;
   const int mapX = pad, mapY = pad + (title.empty() ? 0 : textH + 12);
   const int barH = std::max(mapH, 200);
@@ -198,8 +222,8 @@ void writePreviewPng(const ZMap& map, const std::string& path, const PreviewOpti
   const double mmPerPx = grid.cellMm / up;
   const double scaleMm = niceBelow(0.4 * mapW * mmPerPx);
   const int scalePx = std::max(1, int(std::lround(scaleMm / mmPerPx)));
-  const std::string scaleLabel = scaleMm >= 1 ? fmt::format("{:g} mm", scaleMm)
-                                              : fmt::format("{:g} {}m", scaleMm * 1000, kMicro);
+  const std::string scaleLabel =
+      scaleMm >= 1 ? fmt::format("{:g} mm", scaleMm) : fmt::format("{:g} \u00b5m", scaleMm * 1000);
   const int scaleY = mapY + barH + 18;
 
   const int width = std::max({labelX + labelW + pad, pad + textWidth(title, s) + pad,

@@ -19,10 +19,11 @@ struct PreviewOptions {
   // Small maps are enlarged by an integer factor until the longest side reaches
   // this, px, so that the legend text is not larger than the map.
   int minPixels = 400;
-  // Drawn above the map with the built-in font (letters are shown upper-case).
+  // Drawn above the map.
   std::string title;
-  // Colour-bar range, mm; NaN: the map's own. A min-pooled reduction of a map too
-  // large to hold passes the full map's range so its picture matches the in-memory one.
+  // Colour-bar range, mm; NaN: robust percentiles of the cut region of the (reduced)
+  // map, see preview_png.cpp. The range comes from the picture's own cells, so a map
+  // reduced before (a tiled run's min-pooled copy) gets the in-memory picture's range.
   double zMin = NAN, zMax = NAN;
 };
 

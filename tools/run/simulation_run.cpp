@@ -12,6 +12,7 @@
 #include "tools/io/height_images.h"
 #include "tools/io/job.h"
 #include "tools/render/preview_png.h"
+#include "tools/run/memory_limits.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
 #include "tools/run/stopwatch.h"

@@ -23,6 +23,7 @@
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
 #include "tools/render/preview_png.h"
+#include "tools/run/memory_limits.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
 #include "tools/run/stopwatch.h"
@@ -240,8 +241,6 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   writer_.close();
   PreviewOptions preview;
   preview.title = run_.at("title").get<std::string>();
-  preview.zMin = zMin_;
-  preview.zMax = zMax_;
   writePreviewPng(preview_, (fs::path(dir_) / "preview.png").string(), preview);
   writeSeconds_ += secondsSince(t0);
 

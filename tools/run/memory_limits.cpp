@@ -1,0 +1,86 @@
+#include "tools/run/memory_limits.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "raycast/simulation.h"
+#include "sweep/input_error.h"
+#include "tools/io/job.h"
+
+namespace scallop {
+
+double availableMemoryBytes() {
+  double available = 0;
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kb = 0;
+  std::string unit;
+  while (meminfo >> key >> kb >> unit)
+    if (key == "MemAvailable:") available = kb * 1024;
+  return available > 0 ? available : 8.0 * (1ull << 30);
+}
+
+void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
+  // Heights are held in double, plus one float32 row buffer per image while writing.
+  const double cells = double(grid.nx) * double(grid.ny);
+  const double need = cells * (sizeof(double) + sizeof(float));
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "a " << grid.nx << " x " << grid.ny << " grid needs " << need / double(1ull << 30)
+        << " GiB (" << std::fixed << std::setprecision(0) << need << " bytes) of memory, but only "
+        << std::defaultfloat << std::setprecision(3) << available / double(1ull << 30)
+        << " GiB are available; use a larger spacing, a smaller stock, or --method exact with "
+           "--tiled (bands of rows, bounded memory)";
+    throw InputError(field, msg.str());
+  }
+}
+
+// makeRaster holds every move (up to its own limit of 5e7): refuse, before generating
+// it, a raster whose moves alone would not fit in memory. Counts as sweep/raster.cpp
+// does; invalid values are left to makeRaster's messages.
+void checkRasterFitsMemory(const Job& job) {
+  const RasterSpec& r = job.raster;
+  if (!(r.stepOver > 0) || !(r.segmentLength >= 0)) return;
+  const bool alongX = r.direction == 'x';
+  const double cross =
+      alongX ? job.stock.max.y - job.stock.min.y : job.stock.max.x - job.stock.min.x;
+  const double feed =
+      (alongX ? job.stock.max.x - job.stock.min.x : job.stock.max.y - job.stock.min.y) +
+      2 * job.cutter.radius + 2;
+  const double passes = std::floor(cross / r.stepOver + 1e-9) + 1;
+  const double moves = passes * (r.segmentLength > 0 ? std::ceil(feed / r.segmentLength) + 1 : 2);
+  const double need = moves * double(sizeof(Move));
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg << "gives " << moves << " moves, which need " << std::setprecision(15) << need
+        << " bytes of memory, but only " << std::fixed << std::setprecision(1)
+        << available / double(1ull << 30) << " GiB are available";
+    throw InputError(r.segmentLength > 0 ? "path.raster.segment_length" : "path.raster.step_over",
+                     msg.str());
+  }
+}
+
+void checkSceneFitsMemory(const Job& job) {
+  // The scene's own estimate (raycast/simulation.h), made from the moves before anything
+  // is built: it errs high, never low, so what it accepts is never killed for memory.
+  size_t moves = 0;
+  const double need = estimateSceneBytes(job.cutter, job.path, job.stock.max.z, &moves);
+  const double available = availableMemoryBytes();
+  if (need > 0.8 * available) {
+    std::ostringstream msg;
+    msg << "the exact simulation of " << moves << " cutting moves needs about "
+        << std::setprecision(need < 1e15 ? 15 : 3) << need << " bytes (" << std::fixed
+        << std::setprecision(1) << need / double(1ull << 30)
+        << " GiB) of memory for its culling scene, but only " << available / double(1ull << 30)
+        << " GiB are available; split the path into several jobs (--tiled bounds only the "
+           "height map's memory, not the scene's)";
+    throw InputError(job.source + ": path", msg.str());
+  }
+}
+
+}  // namespace scallop
