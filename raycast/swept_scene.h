@@ -29,8 +29,8 @@ struct SceneOptions {
 
 // The side (mm) of the culling tiles of a segment whose xy box has the given area
 // (mm^2): SceneOptions::tileSize if set, else max(R / 8, sqrt(area / N)) with N = 16
-// tiles for moves shorter than the cutter radius R and 64 otherwise. Memory estimates
-// (tools/job.cpp) use the same rule.
+// tiles for moves shorter than the cutter radius R and 64 otherwise. The memory estimate
+// (estimateSceneBytes, raycast/simulation.h) uses the same rule.
 double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
                        const SceneOptions& options);
 

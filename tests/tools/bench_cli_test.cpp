@@ -77,7 +77,9 @@ TEST(BenchCases, FreeformPathsFollowTheSurfaceAlongX) {
         EXPECT_NEAR(p.tip.z, freeformHeight(p.tip.x, p.tip.y), turning ? 1e-6 : 0) << name;
       if (previous) {
         EXPECT_EQ(previous->to.tip, mv.from.tip);
-        if (turning) EXPECT_EQ(previous->to.axis, mv.from.axis);
+        if (turning) {
+          EXPECT_EQ(previous->to.axis, mv.from.axis);
+        }
       }
       previous = &mv;
     }
