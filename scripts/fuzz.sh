@@ -1,16 +1,18 @@
 #!/bin/sh
 # Builds the libFuzzer targets (tests/fuzz/*_fuzz.cpp) with clang, ASan and UBSan in
-# build-clang (scripts/clang-tree.sh, shared with the sanitized test suite) and runs each for SECONDS (default 60). A crash, sanitizer report, hang
+# build-fuzz and runs each for SECONDS (default 60). A crash, sanitizer report, hang
 # (> 10 s on one input) or blow-up (> 2 GB) stops that target, saves the input as
-# build-clang/findings/NAME-crash-..., and makes this script exit 1 after all have run.
-# New interesting inputs go to build-clang/corpus/NAME (the seeds in
+# build-fuzz/findings/NAME-crash-..., and makes this script exit 1 after all have run.
+# New interesting inputs go to build-fuzz/corpus/NAME (the seeds in
 # tests/fuzz/corpus/NAME are only read). Usage: scripts/fuzz.sh [SECONDS] [NAME...]
 # (SECONDS = 0 only builds.)
 set -eu
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 [ $# -gt 0 ] && shift
-build=$(./scripts/clang-tree.sh)
+build=build-fuzz
+CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DSCALLOP_FUZZ=ON -DSCALLOP_BUILD_TESTS=OFF >/dev/null
 names=${*:-$(cd tests/fuzz && ls *_fuzz.cpp | sed 's/_fuzz\.cpp$//')}
 targets=""
 for n in $names; do targets="$targets ${n}_fuzz"; done

@@ -1,7 +1,6 @@
 #!/bin/sh
 # Builds scallop and its test suite with AddressSanitizer + UndefinedBehaviorSanitizer
-# in the clang tree build-clang (scripts/clang-tree.sh, shared with the fuzzers) and
-# runs the whole suite there. Any memory
+# (-DSCALLOP_SANITIZE=ON) in build-asan and runs the whole suite there. Any memory
 # error, leak or undefined behaviour aborts the test that hit it, so ctest fails.
 # Embree, TBB and OpenImageIO are Debian's uninstrumented shared libraries: errors
 # inside them are not seen, but our code's use of their buffers is.
@@ -9,7 +8,8 @@
 # (none at present). Usage: scripts/sanitize.sh [extra ctest arguments]
 set -eu
 cd "$(dirname "$0")/.."
-build=$(./scripts/clang-tree.sh)
+build=build-asan
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCALLOP_SANITIZE=ON >/dev/null
 cmake --build "$build" -j "$(nproc)" --target scallop scallop_tests
 # detect_leaks: LeakSanitizer works here (it needs ptrace-free /proc access, which CI
 # containers allow). abort_on_error gives a core-dump-style stop that ctest reports.

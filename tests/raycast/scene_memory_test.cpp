@@ -11,6 +11,7 @@
 #include <string>
 
 #include "raycast/simulation.h"
+#include "tests/sanitizer.h"
 
 namespace scallop {
 namespace {
@@ -39,7 +40,7 @@ ToolPath turningPath(int passes) {
 }
 
 TEST(SceneMemory, EstimateIsAtLeastWhatTheSceneTakes) {
-#if defined(__SANITIZE_ADDRESS__)
+#if SCALLOP_UNDER_ASAN
   GTEST_SKIP() << "peak memory is not meaningful under AddressSanitizer";
 #endif
   const Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);

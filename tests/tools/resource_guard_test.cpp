@@ -11,6 +11,7 @@
 #include <string>
 
 #include "sweep/input_error.h"
+#include "tests/sanitizer.h"
 #include "tests/tools/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/io/tool_path_file.h"
@@ -89,7 +90,7 @@ long statusKb(const char* field) {
 }
 
 TEST(ResourceGuard, ToolPathFilesAreReadAsAStream) {
-#if defined(__SANITIZE_ADDRESS__)
+#if SCALLOP_UNDER_ASAN
   // ASan's redzones and its quarantine of freed blocks (the vector's old buffers)
   // change the peak; the measurement belongs to the normal build.
   GTEST_SKIP() << "peak memory is not meaningful under AddressSanitizer";
