@@ -1,8 +1,12 @@
-// Pose and Move: where the cutter is (APT CL convention, CONVENTIONS.md "Tool pose").
+// Pose and Move: where the cutter is (APT CL convention, CONVENTIONS.md "Tool pose"),
+// and what a tool path holds besides its moves: the cutters of a multi-tool program
+// (CONVENTIONS.md "Tools") and the rotary motion of a 5-axis machine ("Machines").
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
+#include "sweep/cutter.h"
 #include "sweep/vec3.h"
 
 namespace scallop {
@@ -12,17 +16,48 @@ struct Pose {
   Vec3 axis;  // unit vector from the tip towards the shank
 };
 
-// A linear move: the tip goes straight from `from.tip` to `to.tip`; the axis is
-// interpolated (slerp) when the two axes differ. Rapids never touch the stock and
-// are not simulated.
+enum class RotaryKinematics : uint8_t { TableBC, TableAC };  // xyzbc-trt, xyzac-trt
+
+// A table-table machine's geometry as LinuxCNC's trtfuncs take it (its HAL pins
+// x/y/z-rot-point, x/y/z-offset; the z offset includes the tool offset). Only moves
+// with TCP off use it: the tip in the part frame is then the forward kinematics of the
+// joints (PoseCurve::jointLinear).
+struct TableMachine {
+  RotaryKinematics kinematics = RotaryKinematics::TableBC;
+  Vec3 pivot;   // rotation point, mm
+  Vec3 offset;  // xyzbc-trt uses x and z, xyzac-trt y and z, mm
+};
+
+// The rotary motion of one move of a 5-axis machine: the tilt (B or A) and spin (C)
+// angles at both ends, radians, linear in t. With TCP on the move's tips are the tool
+// tip (linear in t); with TCP off the joints X Y Z move linearly from joints0 to
+// joints1 and the tip follows the machine's forward kinematics.
+struct RotaryMotion {
+  double tilt0 = 0, tilt1 = 0, spin0 = 0, spin1 = 0;
+  bool tcp = true;
+  Vec3 joints0, joints1;  // TCP off: machine X Y Z at both ends, mm
+};
+
+// One move: the tip goes straight from `from.tip` to `to.tip`; the axis is
+// interpolated (slerp) when the two axes differ, unless the move is a machine's rotary
+// motion (`rotary` > 0: ToolPath::rotary[rotary - 1] gives the pose curve). Rapids
+// never touch the stock and are not simulated. `tool` indexes ToolPath::cutters.
 struct Move {
   Pose from;
   Pose to;
   bool rapid = false;
+  uint16_t tool = 0;
+  uint32_t rotary = 0;
 };
 
 struct ToolPath {
   std::vector<Move> moves;
+  // The cutters the moves' `tool` indices name (a multi-tool program); empty: every
+  // move cuts with the one cutter the sweep is given.
+  std::vector<Cutter> cutters;
+  // Rotary motions of a 5-axis machine's moves (Move::rotary), and the machine.
+  std::vector<RotaryMotion> rotary;
+  TableMachine machine;
   size_t cuttingMoves() const;
 };
 

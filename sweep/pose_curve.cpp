@@ -13,12 +13,6 @@ namespace {
 // more than reach * 1e-12 mm from the constant-axis solid.
 constexpr double kNoTurn = 1e-12;
 
-Vec3 tableAxis(RotaryKinematics kin, double tilt, double spin) {
-  const double st = std::sin(tilt), ct = std::cos(tilt);
-  if (kin == RotaryKinematics::TableBC) return {-std::cos(spin) * st, std::sin(spin) * st, ct};
-  return {std::sin(spin) * st, std::cos(spin) * st, ct};
-}
-
 // Rotations of v about the coordinate axes by `angle` (right-handed).
 Vec3 rotX(const Vec3& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -37,7 +31,35 @@ double clampUnit(double t) {
   return std::clamp(t, 0.0, 1.0);
 }
 
+// The constant parts of the forward kinematics (pose_curve.h): q = joints - d - pivot,
+// tip = Rz(-C) (Rt(-T) q + e) + c.
+struct Kinematics {
+  Vec3 d, e, c;
+};
+Kinematics kinematicsOf(const TableMachine& m) {
+  const Vec3 o = m.offset;
+  const Vec3 c = m.pivot + Vec3{0, 0, o.z};
+  if (m.kinematics == RotaryKinematics::TableBC) return {{o.x, 0, o.z}, {o.x, 0, 0}, c};
+  return {{0, o.y, o.z}, {0, o.y, 0}, c};
+}
+
+Vec3 tiltRotation(bool bc, const Vec3& v, double angle) {
+  return bc ? rotY(v, angle) : rotX(v, angle);
+}
+
 }  // namespace
+
+Vec3 machineAxis(RotaryKinematics kin, double tilt, double spin) {
+  const double st = std::sin(tilt), ct = std::cos(tilt);
+  if (kin == RotaryKinematics::TableBC) return {-std::cos(spin) * st, std::sin(spin) * st, ct};
+  return {std::sin(spin) * st, std::cos(spin) * st, ct};
+}
+
+Vec3 machineTip(const TableMachine& machine, const Vec3& joints, double tilt, double spin) {
+  const Kinematics k = kinematicsOf(machine);
+  const bool bc = machine.kinematics == RotaryKinematics::TableBC;
+  return rotZ(tiltRotation(bc, joints - k.d - machine.pivot, -tilt) + k.e, -spin) + k.c;
+}
 
 namespace {
 
@@ -82,15 +104,63 @@ PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& 
   c.tip1_ = tip1;
   c.tilt0_ = tilt0, c.dTilt_ = tilt1 - tilt0;
   c.spin0_ = spin0, c.dSpin_ = spin1 - spin0;
-  c.u_ = tableAxis(kin, tilt0, spin0);
-  c.a1_ = tableAxis(kin, tilt1, spin1);
+  c.u_ = machineAxis(kin, tilt0, spin0);
+  c.a1_ = machineAxis(kin, tilt1, spin1);
   c.omega_ = std::fabs(c.dTilt_) + std::fabs(c.dSpin_);
   if (c.omega_ <= kNoTurn) c.omega_ = 0, c.a1_ = c.u_;
   return c;
 }
 
+PoseCurve PoseCurve::jointLinear(const TableMachine& machine, const RotaryMotion& m) {
+  const bool bc = machine.kinematics == RotaryKinematics::TableBC;
+  PoseCurve c = rotary(machine.kinematics, machineTip(machine, m.joints0, m.tilt0, m.spin0),
+                       machineTip(machine, m.joints1, m.tilt1, m.spin1), m.tilt0, m.tilt1,
+                       m.spin0, m.spin1);
+  if (c.omega_ == 0) return c;  // constant angles: the rotation is fixed, the tip linear
+  c.kind_ = bc ? Kind::JointBC : Kind::JointAC;
+  const Kinematics k = kinematicsOf(machine);
+  c.q0_ = m.joints0 - k.d - machine.pivot;
+  c.dq_ = m.joints1 - m.joints0;
+  c.e_ = k.e;
+  c.c_ = k.c;
+  // The bounds of pose_curve.h, from the rates before any rounding to zero.
+  const double w = std::fabs(c.dTilt_) + std::fabs(c.dSpin_), wc = std::fabs(c.dSpin_);
+  const double Q = std::fmax(length(c.q0_), length(c.q0_ + c.dq_)), dq = length(c.dq_);
+  const double e = length(c.e_);
+  c.tipAccel_ = w * w * Q + 2 * w * dq + wc * wc * e;
+  c.tipJerk_ = w * w * w * Q + 3 * w * w * dq + wc * wc * wc * e;
+  return c;
+}
+
+PoseCurve PoseCurve::ofMove(const ToolPath& path, const Move& move, const char* where) {
+  if (move.rotary == 0) return linear(move.from, move.to, where);
+  const RotaryMotion& m = path.rotary.at(move.rotary - 1);
+  if (!m.tcp) return jointLinear(path.machine, m);
+  return rotary(path.machine.kinematics, move.from.tip, move.to.tip, m.tilt0, m.tilt1, m.spin0,
+                m.spin1);
+}
+
+Vec3 PoseCurve::forward(double t) const {
+  const bool bc = kind_ == Kind::JointBC;
+  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
+  return rotZ(tiltRotation(bc, q0_ + dq_ * t, -tilt) + e_, -spin) + c_;
+}
+
+Vec3 PoseCurve::tipVelocity(double t) const {
+  if (linearTip()) return tip1_ - tip0_;
+  // tip = Z(phi) (T(psi) q + e) + c with phi = -C(t), psi = -T(t); a rotation about the
+  // unit axis n by angle a has d/da R v = n x R v.
+  const bool bc = kind_ == Kind::JointBC;
+  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
+  const Vec3 tq = tiltRotation(bc, q0_ + dq_ * t, -tilt);
+  const Vec3 n = bc ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
+  const Vec3 inner = cross(n, tq) * -dTilt_ + tiltRotation(bc, dq_, -tilt);
+  return cross(Vec3{0, 0, 1}, rotZ(tq + e_, -spin)) * -dSpin_ + rotZ(inner, -spin);
+}
+
 Vec3 PoseCurve::tip(double t) const {
   if (t >= 1) return tip1_;
+  if (!linearTip()) return t <= 0 ? tip0_ : forward(t);
   return tip0_ + (tip1_ - tip0_) * t;
 }
 
@@ -98,9 +168,8 @@ Vec3 PoseCurve::axis(double t) const {
   if (omega_ == 0 || t <= 0) return u_;
   if (t >= 1) return a1_;
   if (kind_ == Kind::Slerp) return u_ * std::cos(phi_ * t) + v_ * std::sin(phi_ * t);
-  const RotaryKinematics kin =
-      kind_ == Kind::TableBC ? RotaryKinematics::TableBC : RotaryKinematics::TableAC;
-  return tableAxis(kin, tilt0_ + dTilt_ * t, spin0_ + dSpin_ * t);
+  const RotaryKinematics kin = tableBC() ? RotaryKinematics::TableBC : RotaryKinematics::TableAC;
+  return machineAxis(kin, tilt0_ + dTilt_ * t, spin0_ + dSpin_ * t);
 }
 
 Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
@@ -115,7 +184,7 @@ Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
   // (xyzac-trt), mapping +Z to axis(t): undo it at ta, apply it at tb.
   const double tiltA = tilt0_ + dTilt_ * ta, spinA = spin0_ + dSpin_ * ta;
   const double tiltB = tilt0_ + dTilt_ * tb, spinB = spin0_ + dSpin_ * tb;
-  if (kind_ == Kind::TableBC) return rotZ(rotY(rotY(rotZ(v, spinA), tiltA), -tiltB), -spinB);
+  if (tableBC()) return rotZ(rotY(rotY(rotZ(v, spinA), tiltA), -tiltB), -spinB);
   return rotZ(rotX(rotX(rotZ(v, spinA), tiltA), -tiltB), -spinB);
 }
 
@@ -124,7 +193,7 @@ Vec3 PoseCurve::spin(double t) const {
   if (kind_ == Kind::Slerp) return cross(u_, v_) * phi_;  // a fixed axis, constant rate
   // R = A(t) B(t) with A = Rz(-C) and B = Ry(-B) or Rx(-A): Omega = Omega_A + A Omega_B.
   const double spin = spin0_ + dSpin_ * clampUnit(t);
-  const Vec3 tiltAxis = kind_ == Kind::TableBC ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
+  const Vec3 tiltAxis = tableBC() ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
   return Vec3{0, 0, -dSpin_} + rotZ(tiltAxis, -spin);
 }
 
@@ -132,7 +201,7 @@ Vec3 PoseCurve::spinRate(double t) const {
   if (omega_ == 0 || kind_ == Kind::Slerp) return {};
   // d/dt (A Omega_B) = Omega_A x (A Omega_B); Omega_A is constant.
   const double spin = spin0_ + dSpin_ * clampUnit(t);
-  const Vec3 tiltAxis = kind_ == Kind::TableBC ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
+  const Vec3 tiltAxis = tableBC() ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
   return cross(Vec3{0, 0, -dSpin_}, rotZ(tiltAxis, -spin));
 }
 

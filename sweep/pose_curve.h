@@ -16,9 +16,22 @@
 //     w1, w2: R' = A'B + AB', R'' = A''B + 2A'B' + AB'', so omega = |w1| + |w2|.
 //     Kinematics xyzbc-trt (axis = (-cos C sin B, sin C sin B, cos B)) and xyzac-trt
 //     (axis = (sin C sin A, cos C sin A, cos A)), as LinuxCNC's trtfuncs define them.
-// A new machine curve is a new kind with its own axis(t) and omega; the kernel is
-// unchanged. (A curve whose tip is not linear, joint-linear motion with TCP off, would
-// add a bound on |tip''| to the same place: swept_move.cpp's chord bound.)
+//   * Joint-linear (5-axis table-table machines with TCP off): the joints X Y Z and
+//     the rotary angles move linearly in t and the tip in the part frame is the
+//     machine's forward kinematics (trtfuncs' xyzbcKinematicsForward and
+//     xyzacKinematicsForward), with q(t) = joints(t) - offset' - pivot linear:
+//         tip(t) = Rz(-C) (Rt(-T) q(t) + e) + pivot + (0, 0, offset.z),
+//     Rt = Ry (xyzbc-trt, e = (offset.x, 0, 0), offset' = (offset.x, 0, offset.z)) or
+//     Rx (xyzac-trt, e = (0, offset.y, 0), offset' = (0, offset.y, offset.z)). The
+//     axis and its rotation are the rotary kind's, so omega is too; the tip is NOT
+//     linear in t. With M = Rz(-C) Rt(-T), |M^(n) v| <= omega^n |v| (the product rule
+//     as above), q'' = 0 and |q(t)| <= max(|q(0)|, |q(1)|) = Q (|q| is convex in t):
+//         |tip''|  <= omega^2 Q + 2 omega |q'| + |wC|^2 |e|,
+//         |tip'''| <= omega^3 Q + 3 omega^2 |q'| + |wC|^3 |e|   (tipAccelBound/JerkBound).
+// A new machine curve is a new kind with its own axis(t) and omega. The kernel
+// (swept_move.cpp) assumes a linear tip today: linearTip() says whether a curve has
+// one; the joint-linear kind is refused before it reaches the kernel
+// (sweep/tool_path_sweep.h, unsweptMove) until the kernel uses the tip bounds.
 #pragma once
 
 #include "sweep/pose.h"
@@ -26,7 +39,12 @@
 
 namespace scallop {
 
-enum class RotaryKinematics { TableBC, TableAC };  // xyzbc-trt, xyzac-trt
+// The tool axis of a table-table machine at tilt (B or A) and spin (C), radians, in the
+// part frame (CONVENTIONS.md "Machines").
+Vec3 machineAxis(RotaryKinematics kinematics, double tilt, double spin);
+// The forward kinematics of `machine`: the tool tip in the part frame for the joints
+// X Y Z (mm) at tilt and spin (radians), LinuxCNC's trtfuncs formulas.
+Vec3 machineTip(const TableMachine& machine, const Vec3& joints, double tilt, double spin);
 
 class PoseCurve {
  public:
@@ -40,7 +58,21 @@ class PoseCurve {
   static PoseCurve rotary(RotaryKinematics kinematics, const Vec3& tip0, const Vec3& tip1,
                           double tilt0, double tilt1, double spin0, double spin1);
 
+  // A table-table machine with TCP off: joints and angles (radians) linear in t, the
+  // tip the forward kinematics of `machine` (above).
+  static PoseCurve jointLinear(const TableMachine& machine, const RotaryMotion& motion);
+  // The curve of `move` of `path`: its machine motion when it has one (Move::rotary),
+  // otherwise linear(move.from, move.to, where).
+  static PoseCurve ofMove(const ToolPath& path, const Move& move, const char* where = "path move");
+
   Vec3 tip(double t) const;
+  // d tip / dt (mm per unit t).
+  Vec3 tipVelocity(double t) const;
+  // Proven bounds over [0, 1] of |d^2 tip / dt^2| and |d^3 tip / dt^3| (mm per unit
+  // t^2, t^3): 0 for the kinds whose tip is linear.
+  double tipAccelBound() const { return tipAccel_; }
+  double tipJerkBound() const { return tipJerk_; }
+  bool linearTip() const { return kind_ != Kind::JointBC && kind_ != Kind::JointAC; }
   Vec3 axis(double t) const;
   Pose pose(double t) const { return {tip(t), axis(t)}; }
   // The cutter's angular velocity Omega(t) (rad per unit t; a direction n fixed to the
@@ -59,7 +91,10 @@ class PoseCurve {
   bool constantAxis() const { return omega_ == 0; }
 
  private:
-  enum class Kind : unsigned char { Slerp, TableBC, TableAC };
+  enum class Kind : unsigned char { Slerp, TableBC, TableAC, JointBC, JointAC };
+  bool tableBC() const { return kind_ == Kind::TableBC || kind_ == Kind::JointBC; }
+  // Joint-linear: the forward kinematics at t of the linear joints.
+  Vec3 forward(double t) const;
   Kind kind_ = Kind::Slerp;
   Vec3 tip0_, tip1_;
   // Slerp: axis(t) = u_ cos(phi t) + v_ sin(phi t), with u_ = a0, v_ the unit vector
@@ -69,6 +104,9 @@ class PoseCurve {
   // Rotary: tilt (B or A) and spin (C) angles at t = 0 and their changes, radians.
   double tilt0_ = 0, dTilt_ = 0, spin0_ = 0, dSpin_ = 0;
   double omega_ = 0;
+  // Joint-linear: q(t) = q0_ + t dq_, the offset e_ and the constant c_ above, mm.
+  Vec3 q0_, dq_, e_, c_;
+  double tipAccel_ = 0, tipJerk_ = 0;
 };
 
 }  // namespace scallop

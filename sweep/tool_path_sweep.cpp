@@ -3,15 +3,22 @@
 #include <cmath>
 #include <string>
 
+#include "sweep/input_error.h"
+
 namespace scallop {
 
 namespace {
 
 // True when the constant-axis move `a` is continued by the segment (bStart, bEnd) along
-// the same line, in the same sense, with the same axis: then the union of their swept
-// solids is the swept solid of the merged segment, so merging is exact.
-bool continues(const SweptMove& a, const Vec3& bStart, const Vec3& bEnd, const Vec3& axis) {
+// the same line, in the same sense, with the same axis and cutter: then the union of
+// their swept solids is the swept solid of the merged segment, so merging is exact.
+bool continues(const SweptMove& a, const Vec3& bStart, const Vec3& bEnd, const Vec3& axis,
+               const Cutter& cutter) {
   if (a.turning() || a.segment()->axis() != axis || a.end() != bStart) return false;
+  const Cutter& c = a.cutter();
+  if (c.type != cutter.type || c.radius != cutter.radius || c.cornerRadius != cutter.cornerRadius ||
+      c.fluteLength != cutter.fluteLength)
+    return false;
   const Vec3 da = a.end() - a.start(), db = bEnd - bStart;
   const double la = length(da), lb = length(db);
   if (la == 0 || lb == 0) return la == 0 && lb == 0 ? false : true;
@@ -20,28 +27,52 @@ bool continues(const SweptMove& a, const Vec3& bStart, const Vec3& bEnd, const V
 
 }  // namespace
 
-std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path) {
+size_t unsweptMove(const ToolPath& path) {
+  for (size_t k = 0; k < path.moves.size(); ++k) {
+    const Move& mv = path.moves[k];
+    if (mv.rapid || mv.rotary == 0) continue;
+    if (!PoseCurve::ofMove(path, mv).linearTip()) return k;
+  }
+  return path.moves.size();
+}
+
+std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path) {
+  const size_t refused = unsweptMove(path);
+  if (refused < path.moves.size())
+    throw InputError("path move " + std::to_string(refused + 1),
+                     "TCP off is not simulated yet: with TCP off the rotary axes move the tip "
+                     "along a curve (forward kinematics), which the exact kernel does not sweep "
+                     "yet; program it with TCP on");
   std::vector<SweptMove> out;
   for (size_t k = 0; k < path.moves.size(); ++k) {
     const Move& mv = path.moves[k];
     if (mv.rapid) continue;
     const std::string where = "path move " + std::to_string(k + 1);
-    const PoseCurve curve = PoseCurve::linear(mv.from, mv.to, where.c_str());
+    if (mv.tool >= cutters.size())
+      throw InputError(where, "tool index " + std::to_string(mv.tool) + " has no cutter (" +
+                                  std::to_string(cutters.size()) + " given)");
+    const Cutter& cutter = cutters[mv.tool];
+    const PoseCurve curve = PoseCurve::ofMove(path, mv, where.c_str());
     if (curve.constantAxis()) {
       const Vec3 axis = curve.axis(0);
-      if (!out.empty() && continues(out.back(), mv.from.tip, mv.to.tip, axis)) {
+      if (!out.empty() && continues(out.back(), curve.tipStart(), curve.tipEnd(), axis, cutter)) {
         // Keep a zero-length predecessor's position out of the merged move.
         const Vec3 start = out.back().start();
-        const Vec3 from = length(out.back().end() - start) == 0 ? mv.from.tip : start;
-        out.back() = SweptMove(SweptSegment(cutter, from, mv.to.tip, axis));
+        const Vec3 from = length(out.back().end() - start) == 0 ? curve.tipStart() : start;
+        out.back() = SweptMove(SweptSegment(cutter, from, curve.tipEnd(), axis));
         continue;
       }
-      out.emplace_back(SweptSegment(cutter, mv.from.tip, mv.to.tip, axis));
+      out.emplace_back(SweptSegment(cutter, curve.tipStart(), curve.tipEnd(), axis));
       continue;
     }
     out.emplace_back(cutter, curve);
   }
   return out;
+}
+
+std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path) {
+  if (!path.cutters.empty()) return sweepToolPath(path.cutters, path);
+  return sweepToolPath(std::vector<Cutter>{cutter}, path);
 }
 
 }  // namespace scallop

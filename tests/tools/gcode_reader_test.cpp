@@ -100,7 +100,7 @@ TEST(GcodeReader, HelixInG18MovesYLinearly) {
 TEST(GcodeReader, MalformedInputIsNamedByLine) {
   const std::string start = "G21\nG0 X0 Y0 Z0\n";
   EXPECT_NE(error(start + "G1 X1.2.3\n").find("t.nc:3"), std::string::npos);
-  EXPECT_NE(error(start + "G43\n").find("t.nc:3: unsupported G-word G43"), std::string::npos);
+  EXPECT_NE(error(start + "G43.7\n").find("t.nc:3: unsupported G-word G43.7"), std::string::npos);
   // Numbers beyond int (a fuzzer finding: the conversion was undefined behaviour).
   EXPECT_NE(error(start + "G99999999999\n").find("t.nc:3: unsupported G-word G1e+11"),
             std::string::npos);
@@ -112,8 +112,9 @@ TEST(GcodeReader, MalformedInputIsNamedByLine) {
   EXPECT_NE(error(start + "G2 X2 Y0 I1.5 J0\n").find("t.nc:3: arc radii differ"),
             std::string::npos);
   EXPECT_NE(error(start + "G2 X4 Y0 R1\n").find("t.nc:3"), std::string::npos);
-  EXPECT_NE(error(start + "G1 A10\n").find("t.nc:3: unsupported word A10"), std::string::npos);
-  EXPECT_NE(error(start + "M6 T2\n").find("t.nc:3"), std::string::npos);
+  EXPECT_NE(error(start + "G1 A10\n").find("t.nc:3: rotary word A10: the job has no \"machine\""),
+            std::string::npos);
+  EXPECT_NE(error(start + "G1 U10\n").find("t.nc:3: unsupported word U10"), std::string::npos);
   EXPECT_NE(error(start + "G1 X1 X2\n").find("t.nc:3: word X appears twice"), std::string::npos);
   EXPECT_NE(error(start + "G1 X1 (unclosed\n").find("t.nc:3"), std::string::npos);
   EXPECT_NE(error("G1 X1 Y1 Z1\n").find("t.nc:1: cutting move from an unknown position"),

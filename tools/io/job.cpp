@@ -1,5 +1,6 @@
 #include "tools/io/job.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,7 @@
 
 #include "sweep/constants.h"
 #include "sweep/input_error.h"
+#include "tools/io/gcode_block.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
@@ -114,23 +116,90 @@ bool boolean(const json& obj, const std::string& key, const std::string& field, 
 
 // --- The sections of a job file. -------------------------------------------------
 
-Cutter parseTool(const json& tool) {
-  rejectUnknownKeys(tool, {"type", "radius", "corner_radius", "flute_length"}, "tool");
-  const CutterType type = parseCutterType(text(tool, "type", "tool.type"), "tool.type");
+Cutter parseTool(const json& tool, const std::string& f = "tool") {
+  rejectUnknownKeys(tool, {"type", "radius", "corner_radius", "flute_length"}, f);
+  const CutterType type = parseCutterType(text(tool, "type", f + ".type"), f + ".type");
   const double zero = 0;
-  const double radius = number(tool, "radius", "tool.radius");
+  const double radius = number(tool, "radius", f + ".radius");
   double corner = 0;
   if (type == CutterType::Bull) {
-    corner = number(tool, "corner_radius", "tool.corner_radius");
+    corner = number(tool, "corner_radius", f + ".corner_radius");
   } else if (tool.contains("corner_radius")) {
-    throw InputError("tool.corner_radius",
+    throw InputError(f + ".corner_radius",
                      std::string("only a bull cutter takes a corner radius (a ") + toString(type) +
                          " cutter's is fixed)");
   }
-  const double flute = number(tool, "flute_length", "tool.flute_length", &zero);
+  const double flute = number(tool, "flute_length", f + ".flute_length", &zero);
   if (tool.contains("flute_length") && flute <= 0)
-    throw InputError("tool.flute_length", "must be > 0 mm");
-  return Cutter::make(type, radius, corner, flute, "tool");
+    throw InputError(f + ".flute_length", "must be > 0 mm");
+  return Cutter::make(type, radius, corner, flute, f);
+}
+
+// "tools": {"1": {cutter}, "2": ...}: keys are tool numbers 1..999999999.
+std::map<int64_t, Cutter> parseTools(const json& tools) {
+  std::map<int64_t, Cutter> out;
+  for (auto it = tools.begin(); it != tools.end(); ++it) {
+    const std::string& key = it.key();
+    const std::string f = "tools." + key;
+    if (key.empty() || key.size() > 9 || key.find_first_not_of("0123456789") != std::string::npos ||
+        key[0] == '0')
+      throw InputError(f, "expected a tool number (the G-code T word: 1, 2, ...) as the key");
+    if (!it.value().is_object()) throw InputError(f, "expected a cutter object");
+    out[std::stoll(key)] = parseTool(it.value(), f);
+  }
+  if (out.empty()) throw InputError("tools", "expected at least one tool");
+  return out;
+}
+
+// "work_offsets": {"G54": [x, y, z], ..., "G59": [...]}.
+std::array<Vec3, 6> parseWorkOffsets(const json& offsets) {
+  std::array<Vec3, 6> out{};
+  rejectUnknownKeys(offsets, {"G54", "G55", "G56", "G57", "G58", "G59"}, "work_offsets");
+  for (int k = 0; k < 6; ++k) {
+    const std::string key = "G5" + std::to_string(4 + k);
+    if (offsets.contains(key)) out[size_t(k)] = point(offsets, key, "work_offsets." + key);
+  }
+  return out;
+}
+
+// A list of G or M codes, e.g. ["G43.4", "M128"], in canonical text (gcodeWordText).
+std::vector<std::string> parseCodes(const json& m, const std::string& key,
+                                    const std::vector<std::string>& fallback) {
+  const std::string f = "machine." + key;
+  if (!m.contains(key)) return fallback;
+  const json& v = m.at(key);
+  if (!v.is_array()) throw InputError(f, "expected a list of G or M codes, e.g. [\"G43.4\"]");
+  std::vector<std::string> out;
+  for (const json& c : v) {
+    const std::string s = c.is_string() ? c.get<std::string>() : "";
+    double value = 0;
+    if (s.size() < 2 || (s[0] != 'G' && s[0] != 'M') || !parseDecimal(s.substr(1), value) ||
+        gcodeTenths(value) < 0)
+      throw InputError(f, "expected codes such as \"G43.4\" or \"M128\", got " + c.dump());
+    out.push_back(gcodeWordText(s[0], value));
+  }
+  return out;
+}
+
+MachineSpec parseMachine(const json& m) {
+  rejectUnknownKeys(m, {"kinematics", "tcp_on", "tcp_off", "pivot", "offset"}, "machine");
+  MachineSpec spec;
+  const std::string kin = text(m, "kinematics", "machine.kinematics");
+  if (kin == "xyzbc-trt")
+    spec.geometry.kinematics = RotaryKinematics::TableBC;
+  else if (kin == "xyzac-trt")
+    spec.geometry.kinematics = RotaryKinematics::TableAC;
+  else
+    throw InputError("machine.kinematics",
+                     "expected \"xyzbc-trt\" or \"xyzac-trt\", got \"" + kin + "\"");
+  spec.tcpOn = parseCodes(m, "tcp_on", spec.tcpOn);
+  spec.tcpOff = parseCodes(m, "tcp_off", spec.tcpOff);
+  for (const std::string& c : spec.tcpOn)
+    if (std::find(spec.tcpOff.begin(), spec.tcpOff.end(), c) != spec.tcpOff.end())
+      throw InputError("machine.tcp_off", c + " is also in tcp_on");
+  if (m.contains("pivot")) spec.geometry.pivot = point(m, "pivot", "machine.pivot");
+  if (m.contains("offset")) spec.geometry.offset = point(m, "offset", "machine.offset");
+  return spec;
 }
 
 RasterSpec parseRaster(const json& r) {
@@ -175,6 +244,15 @@ const char* defaultJobJson() {
   "path":  {"raster": {"direction": "x", "step_over": 2.884, "depth": 0.5,
                        "lead_deg": 5, "tilt_deg": 0, "zigzag": false}}
 })";
+}
+
+PathFileOptions Job::pathOptions() const {
+  PathFileOptions o;
+  o.blockDelete = blockDelete;
+  o.workOffsets = workOffsets;
+  o.tools = tools;
+  o.machine = machine;
+  return o;
 }
 
 GridSpec Job::grid() const {
@@ -226,12 +304,28 @@ Job parseJob(const std::string& textIn, const std::string& source,
       throw InputError("sweep.axis_tolerance",
                        "is no longer used: moves whose axis turns are swept exactly, with no "
                        "tolerance; remove \"sweep\" from the job");
-    rejectUnknownKeys(doc, {"tool", "stock", "grid", "path", "design"}, "");
+    rejectUnknownKeys(doc, {"tool", "tools", "stock", "grid", "path", "design", "work_offsets",
+                            "block_delete", "machine"},
+                      "");
     Job job;
     job.source = source;
     // Without "tool" the path file's CUTTER/ statement defines it (below).
     job.hasTool = doc.contains("tool");
     if (job.hasTool) job.cutter = parseTool(requireObject(doc, "tool", "tool"));
+    if (doc.contains("tools")) {
+      if (job.hasTool)
+        throw InputError("tools", "a job has \"tool\" or \"tools\", not both");
+      job.tools = parseTools(requireObject(doc, "tools", "tools"));
+      // The largest cutter stands for all in summaries and estimates (job.h).
+      job.cutter = job.tools.begin()->second;
+      for (const auto& [number, cutter] : job.tools)
+        if (cutter.radius + cutter.fluteLength > job.cutter.radius + job.cutter.fluteLength)
+          job.cutter = cutter;
+    }
+    if (doc.contains("work_offsets"))
+      job.workOffsets = parseWorkOffsets(requireObject(doc, "work_offsets", "work_offsets"));
+    job.blockDelete = boolean(doc, "block_delete", "block_delete", false);
+    if (doc.contains("machine")) job.machine = parseMachine(requireObject(doc, "machine", "machine"));
     namespace fs = std::filesystem;
     auto besideJob = [&](const std::string& file) {
       fs::path p(file);
@@ -272,7 +366,8 @@ Job parseJob(const std::string& textIn, const std::string& source,
     if (path.contains("raster") == path.contains("file"))
       throw InputError("path", "expected exactly one of \"raster\" or \"file\"");
     if (path.contains("raster") && !doc.contains("tool"))
-      throw InputError("tool", "missing; expected an object");
+      throw InputError("tool", doc.contains("tools") ? "a raster needs one \"tool\", not \"tools\""
+                                                     : "missing; expected an object");
     if (path.contains("raster")) {
       job.isRaster = true;
       job.raster = parseRaster(requireObject(path, "raster", "path.raster"));
@@ -293,13 +388,15 @@ void throwFromJob(const InputError& e, const std::string& source) {
   throw InputError(source + ": " + e.where(), e.reason());
 }
 
+static json cutterToJson(const Cutter& c) {
+  return {{"type", toString(c.type)},
+          {"radius", c.radius},
+          {"corner_radius", c.cornerRadius},
+          {"flute_length", c.fluteLength}};
+}
+
 json jobToJson(const Job& job) {
-  json tool = {{"type", toString(job.cutter.type)},
-               {"radius", job.cutter.radius},
-               {"corner_radius", job.cutter.cornerRadius},
-               {"flute_length", job.cutter.fluteLength}};
-  json out = {{"tool", tool},
-              {"stock",
+  json out = {{"stock",
                {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
                 {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}}},
               {"grid", {{"spacing", job.spacing}}}};
@@ -316,8 +413,31 @@ json jobToJson(const Job& job) {
   } else {
     out["path"] = {{"file", job.pathFile}, {"format", job.pathFormat}};
   }
+  if (job.tools.empty()) {
+    out["tool"] = cutterToJson(job.cutter);
+  } else {
+    json tools = json::object();
+    for (const auto& [number, cutter] : job.tools) tools[std::to_string(number)] = cutterToJson(cutter);
+    out["tools"] = tools;
+  }
   if (job.design)
     out["design"] = {{"stl", job.designFile}, {"gouge_tolerance", job.gougeTolerance}};
+  json offsets = json::object();
+  for (int k = 0; k < 6; ++k) {
+    const Vec3& o = job.workOffsets[size_t(k)];
+    if (o != Vec3{}) offsets["G5" + std::to_string(4 + k)] = {o.x, o.y, o.z};
+  }
+  if (!offsets.empty()) out["work_offsets"] = offsets;
+  if (job.blockDelete) out["block_delete"] = true;
+  if (job.machine) {
+    const TableMachine& g = job.machine->geometry;
+    out["machine"] = {
+        {"kinematics", g.kinematics == RotaryKinematics::TableBC ? "xyzbc-trt" : "xyzac-trt"},
+        {"tcp_on", job.machine->tcpOn},
+        {"tcp_off", job.machine->tcpOff},
+        {"pivot", {g.pivot.x, g.pivot.y, g.pivot.z}},
+        {"offset", {g.offset.x, g.offset.y, g.offset.z}}};
+  }
   return out;
 }
 

@@ -3,8 +3,11 @@
 // name the file, the line (for malformed JSON) or the field, and what was expected.
 #pragma once
 
+#include <array>
+#include <map>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,7 +26,18 @@ class InputError;
 struct Job {
   std::string source;  // file name, or "built-in default job"
   bool hasTool = false;  // "tool" was given; otherwise the path file's CUTTER/ is the tool
+  // The one cutter, or with "tools" (or an APT file of several CUTTER/s) the one of
+  // largest radius: what single-cutter summaries and memory estimates use (they err
+  // high). The moves' own cutters are path.cutters.
   Cutter cutter;
+  // "tools": {"1": {cutter}, ...}: T number -> cutter (CONVENTIONS.md "Tools").
+  std::map<int64_t, Cutter> tools;
+  // "work_offsets": {"G54": [x, y, z], ...}: G-code work offsets, mm (zero by default).
+  std::array<Vec3, 6> workOffsets{};
+  // "block_delete": true skips G-code lines starting with '/'.
+  bool blockDelete = false;
+  // "machine": a 5-axis machine for G-code rotary words (CONVENTIONS.md "Machines").
+  std::optional<MachineSpec> machine;
   Box3 stock;
   double spacing = 0;           // grid cell side, mm
   bool isRaster = false;
@@ -35,12 +49,16 @@ struct Job {
   std::string pathFormat;
   std::vector<int64_t> moveLines;
   PathWarnings pathWarnings;
+  IgnoredWords ignoredWords;         // words of the file that change no geometry
+  std::vector<int64_t> toolNumbers;  // T number of path.cutters[k] (multi-tool files)
   // "design": {"stl": FILE, "gouge_tolerance": mm}: the part the path should make.
   std::string designFile;                      // resolved; empty without a design
   std::shared_ptr<const TriangleMesh> design;  // read by loadJobInputs
   double gougeTolerance = 1e-3;                // mm below the design that is a gouge
 
   GridSpec grid() const;
+  // How the path file is read: block delete, work offsets, tools and machine.
+  PathFileOptions pathOptions() const;
 };
 
 // The built-in default job: a bull cutter raster with lead (the README's main job).

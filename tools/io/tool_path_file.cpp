@@ -23,6 +23,15 @@ void PathWarnings::add(const std::string& where, const std::string& what) {
   ++total;
 }
 
+void IgnoredWords::add(const std::string& word, const std::string& meaning, int64_t line) {
+  auto it = std::find_if(entries.begin(), entries.end(),
+                         [&](const Entry& e) { return e.word == word; });
+  if (it == entries.end()) it = entries.insert(entries.end(), Entry{word, meaning, 0, {}});
+  ++it->count;
+  if (it->lines.size() < kMaxLines && (it->lines.empty() || it->lines.back() != line))
+    it->lines.push_back(line);
+}
+
 void ToolPathFile::addMove(const Pose& from, const Pose& to, bool rapid, int64_t line) {
   path.moves.push_back(Move{from, to, rapid});
   moveLines.push_back(line);
@@ -168,12 +177,15 @@ double segmentToBoxXY(const Vec3& a, const Vec3& b, const Vec3& lo, const Vec3& 
 
 }  // namespace
 
-void warnRapidsIntoStock(ToolPathFile& file, const Cutter& cutter, const Box3& stock,
+void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3& stock,
                          const std::string& source) {
   const Vec3 down{0, 0, -1};
   for (size_t k = 0; k < file.path.moves.size(); ++k) {
     const Move& mv = file.path.moves[k];
     if (!mv.rapid) continue;
+    // A multi-tool program's rapids carry the tool in the spindle (Move::tool).
+    const Cutter& cutter =
+        mv.tool < file.path.cutters.size() ? file.path.cutters[mv.tool] : jobCutter;
     // A retract straight up the tool axis only enters the space above the cutter's
     // current place, which CAM systems leave free; it is not flagged.
     const Vec3 d = mv.to.tip - mv.from.tip;

@@ -18,8 +18,10 @@
 // Every reader throws InputError naming "file:line" and what was expected.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <iosfwd>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,9 +41,39 @@ struct PathWarnings {
   void add(const std::string& where, const std::string& what);
 };
 
+// Words a file holds that change nothing scallop simulates (feeds, spindle, coolant,
+// tool length compensation...): each distinct word once, with what it means, how often
+// it appears and its first lines, for report.json.
+struct IgnoredWords {
+  static constexpr size_t kMaxLines = 20;
+  struct Entry {
+    std::string word, meaning;
+    size_t count = 0;
+    std::vector<int64_t> lines;  // the first kMaxLines
+  };
+  std::vector<Entry> entries;  // in the order first met
+  void add(const std::string& word, const std::string& meaning, int64_t line);
+};
+
+// A 5-axis machine for G-code rotary words (CONVENTIONS.md "Machines"): its
+// kinematics and geometry, and the codes that switch TCP on and off (canonical text,
+// gcodeWordText: "G43.4", "M128").
+struct MachineSpec {
+  TableMachine geometry;
+  std::vector<std::string> tcpOn{"G43.4"}, tcpOff{"G49"};
+};
+
 struct PathFileOptions {
   // Arcs (G2/G3) become chords whose distance from the true arc is at most this, mm.
   double arcTolerance = 1e-4;
+  // G-code block delete: lines starting with '/' are skipped (on) or read (off).
+  bool blockDelete = false;
+  // G-code work offsets G54..G59: the job-frame position of each one's zero, mm.
+  std::array<Vec3, 6> workOffsets{};
+  // The job's "tools": T number -> cutter. Empty: the job has one tool.
+  std::map<int64_t, Cutter> tools;
+  // The job's "machine": G-code rotary words A/B/C are refused without one.
+  std::optional<MachineSpec> machine;
 };
 
 struct ToolPathFile {
@@ -53,6 +85,10 @@ struct ToolPathFile {
   PathWarnings warnings;
   std::optional<Cutter> cutter;  // APT CUTTER/ statement, when present
   double arcTolerance = 0;       // mm, for G-code arcs (0 when the format has none)
+  // A multi-tool file: toolNumbers[k] is the T number (G-code, APT LOADTL) or the
+  // CUTTER/ statement's line (APT without LOADTL) of path.cutters[k].
+  std::vector<int64_t> toolNumbers;
+  IgnoredWords ignored;
 
   // Appends a move from the current location (the last move's end).
   void addMove(const Pose& from, const Pose& to, bool rapid, int64_t line);
@@ -71,6 +107,8 @@ ToolPath parseToolPath(const std::string& text, const std::string& source);
 // below stock.max.z while the tip's path there comes within the cutter's horizontal
 // reach (R, plus flute length x sin(tilt) for a tilted axis) of the box. Retracts
 // straight up the tool axis are not flagged (they leave by the way the cutter is).
+// A multi-tool file's rapids are checked with the tool in the spindle
+// (path.cutters[move.tool]), others with `cutter`.
 void warnRapidsIntoStock(ToolPathFile& file, const Cutter& cutter, const Box3& stock,
                          const std::string& source);
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sweep/input_error.h"
+#include "sweep/tool_path_sweep.h"
 #include "tools/io/stl_io.h"
 #include "tools/io/tool_path_file.h"
 #include "tools/run/memory_limits.h"
@@ -17,11 +18,24 @@ namespace {
 // The tool path of a job with "path": {"file": ...}, and the cutter from its CUTTER/
 // when the job has no "tool".
 void readPathFile(Job& job) {
-  ToolPathFile read = readToolPathFile(job.pathFile);
-  if (!job.hasTool && !read.cutter)
-    throw InputError(
-        "tool", "missing; expected an object (or a CUTTER/ statement in " + job.pathFile + ")");
-  if (!job.hasTool) job.cutter = *read.cutter;
+  ToolPathFile read = readToolPathFile(job.pathFile, job.pathOptions());
+  const bool multiTool = !read.path.cutters.empty();
+  if (!job.hasTool && job.tools.empty() && !read.cutter)
+    throw InputError("tool", "missing; expected an object, or \"tools\" (or a CUTTER/ "
+                             "statement in " + job.pathFile + ")");
+  if (!job.hasTool && job.tools.empty()) job.cutter = *read.cutter;
+  if (!job.hasTool && multiTool) {
+    // Summaries and estimates take the largest of the cutters used (job.h).
+    job.cutter = read.path.cutters.front();
+    for (const Cutter& c : read.path.cutters)
+      if (c.radius + c.fluteLength > job.cutter.radius + job.cutter.fluteLength) job.cutter = c;
+  }
+  if (job.hasTool && multiTool) {
+    // The job's one "tool" cuts every move (the file's CUTTER/s are only checked below).
+    read.path.cutters.clear();
+    read.toolNumbers.clear();
+    for (Move& m : read.path.moves) m.tool = 0;
+  }
   if (job.hasTool && read.cutter &&
       (read.cutter->type != job.cutter.type || read.cutter->radius != job.cutter.radius ||
        read.cutter->cornerRadius != job.cutter.cornerRadius))
@@ -29,10 +43,18 @@ void readPathFile(Job& job) {
                       "its CUTTER/ differs from the job's \"tool\"; the job's "
                       "tool is used");
   checkPathMagnitudes(read.path, read.moveLines, job.pathFile);
+  const size_t unswept = unsweptMove(read.path);
+  if (unswept < read.path.moves.size())
+    throw InputError(job.pathFile + ":" + std::to_string(read.moveLines[unswept]),
+                     "TCP off is not simulated yet: this move turns the rotary axes with TCP off, "
+                     "so the tip follows the machine's forward kinematics (a curve), which the "
+                     "exact kernel does not sweep yet; switch TCP on for it (machine.tcp_on)");
   warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile);
   job.path = std::move(read.path);
   job.moveLines = std::move(read.moveLines);
   job.pathWarnings = std::move(read.warnings);
+  job.ignoredWords = std::move(read.ignored);
+  job.toolNumbers = std::move(read.toolNumbers);
   job.pathFormat = read.format;
 }
 

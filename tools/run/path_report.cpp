@@ -20,7 +20,46 @@ json pathFileReport(const Job& job, bool quiet) {
       std::fprintf(stderr, "scallop: warning: %s\n", w.kept[k].c_str());
     if (w.total > 20) std::fprintf(stderr, "scallop: %zu warnings in all\n", w.total);
   }
-  return {{"format", job.pathFormat}, {"warnings", w.kept}, {"warnings_total", w.total}};
+  json ignored = json::array();
+  for (const IgnoredWords::Entry& e : job.ignoredWords.entries)
+    ignored.push_back(
+        {{"word", e.word}, {"meaning", e.meaning}, {"count", e.count}, {"lines", e.lines}});
+  json r = {{"format", job.pathFormat},
+            {"warnings", w.kept},
+            {"warnings_total", w.total},
+            {"ignored_words", ignored}};
+  const std::vector<Cutter>& cutters = job.path.cutters;
+  if (!cutters.empty()) {
+    // The tools of a multi-tool program, each with the cutting moves it makes.
+    std::vector<int64_t> moves(cutters.size(), 0), first(cutters.size(), 0), last(cutters.size(), 0);
+    for (size_t k = 0; k < job.path.moves.size(); ++k) {
+      const Move& m = job.path.moves[k];
+      if (m.rapid || m.tool >= cutters.size()) continue;
+      const int64_t line = k < job.moveLines.size() ? job.moveLines[k] : 0;
+      if (moves[m.tool]++ == 0) first[m.tool] = line;
+      last[m.tool] = line;
+    }
+    json tools = json::array();
+    for (size_t t = 0; t < cutters.size(); ++t) {
+      const Cutter& c = cutters[t];
+      tools.push_back({{"number", t < job.toolNumbers.size() ? job.toolNumbers[t] : int64_t(t + 1)},
+                       {"tool",
+                        {{"type", toString(c.type)},
+                         {"radius", c.radius},
+                         {"corner_radius", c.cornerRadius},
+                         {"flute_length", c.fluteLength}}},
+                       {"cutting_moves", moves[t]},
+                       {"first_line", first[t]},
+                       {"last_line", last[t]}});
+    }
+    r["tools"] = tools;
+    if (!quiet)
+      for (size_t t = 0; t < cutters.size(); ++t)
+        std::fprintf(stderr, "tool T%lld: %s R = %g mm, %lld cutting moves\n",
+                     (long long)(t < job.toolNumbers.size() ? job.toolNumbers[t] : int64_t(t + 1)),
+                     toString(cutters[t].type), cutters[t].radius, (long long)moves[t]);
+  }
+  return r;
 }
 
 json designReport(const Job& job, const ZMap& map,

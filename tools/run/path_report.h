@@ -13,8 +13,10 @@ namespace scallop {
 
 struct Job;
 
-// {"format", "warnings": [...first 100...], "warnings_total"} for a path file, and the
-// same warnings on stderr (the first 20 and a count) unless `quiet`.
+// {"format", "warnings": [...first 100...], "warnings_total", "ignored_words": [{"word",
+// "meaning", "count", "lines": [first 20]}], and for a multi-tool file "tools":
+// [{"number", "tool", "cutting_moves", "first_line", "last_line"}]} for a path file, and
+// the same warnings on stderr (the first 20 and a count) unless `quiet`.
 nlohmann::json pathFileReport(const Job& job, bool quiet);
 
 // Compares `map` with job.design (analysis/design_deviation.h), writes

@@ -1,0 +1,479 @@
+#include "tools/io/gcode_interpreter.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "sweep/constants.h"
+#include "sweep/input_error.h"
+#include "sweep/pose_curve.h"
+#include "tools/io/gcode_arc.h"
+#include "tools/io/gcode_cycles.h"
+
+namespace scallop {
+
+namespace {
+
+double& component(Vec3& p, int i) {
+  return i == 0 ? p.x : i == 1 ? p.y : p.z;
+}
+double component(const Vec3& p, int i) {
+  return i == 0 ? p.x : i == 1 ? p.y : p.z;
+}
+
+std::string codeText(char letter, int tenths) {
+  return gcodeWordText(letter, tenths / 10.0);
+}
+
+bool listed(const std::vector<std::string>& codes, const std::string& word) {
+  return std::find(codes.begin(), codes.end(), word) != codes.end();
+}
+
+}  // namespace
+
+// The words of one block by modal group, in tenths (-1: none in the block).
+struct GcodeInterpreter::Groups {
+  int motion = -1, plane = -1, units = -1, distance = -1, arcDistance = -1, feed = -1;
+  int compensation = -1, length = -1, offset = -1, pathMode = -1, retract = -1, nonModal = -1;
+  int tcp = -1;  // 1: a tcp_on code, 0: a tcp_off code
+  bool end = false, change = false;
+};
+
+GcodeInterpreter::GcodeInterpreter(const std::string& source, const PathFileOptions& options,
+                                   ToolPathFile& out)
+    : source_(source), options_(options), out_(out) {
+  if (options_.machine) out_.path.machine = options_.machine->geometry;
+}
+
+void GcodeInterpreter::ignore(const std::string& word, const std::string& meaning) {
+  out_.ignored.add(word, meaning, line_);
+}
+
+// --- G and M words into their groups. ---------------------------------------------
+
+void GcodeInterpreter::classifyG(const GcodeBlock& b, Groups& g) {
+  auto set = [&](int& slot, int code, const char* group) {
+    if (slot != -1)
+      throw InputError(where_, fmt::format("two {} words ({} and {}) in one line", group,
+                                           codeText('G', slot), codeText('G', code)));
+    slot = code;
+  };
+  for (double v : b.g) {
+    const std::string text = gcodeWordText('G', v);
+    if (options_.machine && listed(options_.machine->tcpOn, text)) {
+      set(g.tcp, 1, "TCP");
+      continue;
+    }
+    if (options_.machine && listed(options_.machine->tcpOff, text)) {
+      set(g.tcp, 0, "TCP");
+      continue;
+    }
+    const int c = gcodeTenths(v);
+    if (c < 0) throw InputError(where_, fmt::format("unsupported G-word G{:g}", v));
+    if (c == 0 || c == 10 || c == 20 || c == 30 || c == 730 || c == 800 ||
+        (c >= 810 && c <= 890 && c % 10 == 0 && c != 870)) {
+      set(g.motion, c, "motion");
+    } else if (c == 870) {
+      throw InputError(where_, "G87 (back boring) is not supported: it cuts from below, which "
+                               "a height map seen from above cannot show");
+    } else if (c == 40 || c == 280 || c == 300 || c == 530) {
+      set(g.nonModal, c, "non-modal");
+    } else if (c == 170 || c == 180 || c == 190) {
+      set(g.plane, c, "plane");
+    } else if (c == 200 || c == 210) {
+      set(g.units, c, "unit");
+    } else if (c == 400) {
+      set(g.compensation, c, "cutter compensation");
+    } else if (c == 410 || c == 420) {
+      throw InputError(where_, fmt::format("{} (cutter radius compensation) is not supported: "
+                                           "scallop sweeps the programmed tool centre; post the "
+                                           "path with compensation done in the CAM system",
+                                           text));
+    } else if (c == 430 || c == 434 || c == 490) {
+      set(g.length, c, "tool length");
+    } else if (c >= 540 && c <= 590 && c % 10 == 0) {
+      set(g.offset, c, "work offset");
+    } else if (c == 610 || c == 611 || c == 640) {
+      set(g.pathMode, c, "path control");
+    } else if (c == 900 || c == 910) {
+      set(g.distance, c, "distance-mode");
+    } else if (c == 901 || c == 911) {
+      set(g.arcDistance, c, "arc distance-mode");
+    } else if (c == 930 || c == 940 || c == 950) {
+      set(g.feed, c, "feed-mode");
+    } else if (c == 980 || c == 990) {
+      set(g.retract, c, "retract-mode");
+    } else if (c == 100 || c == 520 || c == 920 || c == 921 || c == 922 || c == 923) {
+      throw InputError(where_, fmt::format("{} (setting a coordinate system) is not supported; "
+                                           "give the work offsets G54-G59 in the job "
+                                           "(\"work_offsets\")",
+                                           text));
+    } else {
+      throw InputError(where_, "unsupported G-word " + text);
+    }
+  }
+}
+
+void GcodeInterpreter::runM(const GcodeBlock& b, Groups& g) {
+  for (double v : b.m) {
+    const std::string text = gcodeWordText('M', v);
+    if (options_.machine && listed(options_.machine->tcpOn, text)) {
+      g.tcp = 1;
+      continue;
+    }
+    if (options_.machine && listed(options_.machine->tcpOff, text)) {
+      g.tcp = 0;
+      continue;
+    }
+    const int c = gcodeTenths(v);
+    if (c < 0 || c % 10 != 0) throw InputError(where_, fmt::format("unsupported M-word M{:g}", v));
+    switch (c / 10) {
+      case 0: case 1: ignore(text, "program stop"); break;
+      case 2: case 30: g.end = true; break;
+      case 3: case 4: case 5: ignore(text, "spindle"); break;
+      case 6: g.change = true; break;
+      case 7: case 8: case 9: ignore(text, "coolant"); break;
+      case 98: case 99:
+        throw InputError(where_, text + " (subprogram call/return) is not supported: post the "
+                                        "program without subprograms");
+      default:
+        out_.warnings.add(where_, "M-code " + text + " ignored (machine-specific; nothing "
+                                  "scallop simulates)");
+    }
+  }
+}
+
+// --- Tools. ---------------------------------------------------------------------
+
+void GcodeInterpreter::selectTool(const GcodeBlock& b, bool change) {
+  const auto& tools = options_.tools;
+  if (b.given('T')) {
+    const double v = b.at('T');
+    if (!(v >= 0 && v <= 1e9 && v == std::floor(v)))
+      throw InputError(where_, fmt::format("T{:g}: expected a tool number (0, 1, 2, ...)", v));
+    const int64_t n = int64_t(v);
+    if (tools.empty()) {
+      ignore("T", "tool select: the job has one \"tool\", which cuts every move");
+    } else if (n != 0 && !tools.count(n)) {
+      std::string have;
+      for (const auto& [number, cutter] : tools) have += (have.empty() ? "" : ", ") + std::to_string(number);
+      throw InputError(where_, fmt::format("T{} is not in the job's \"tools\" (it has {})", n, have));
+    }
+    selected_ = n;
+  }
+  if (!change) return;
+  if (tools.empty()) return ignore("M6", "tool change: the job has one \"tool\"");
+  if (selected_ < 0) throw InputError(where_, "M6 (tool change) before any T word selects a tool");
+  spindle_ = -1;
+  if (selected_ == 0) return;  // T0 M6: the spindle is empty
+  const auto& numbers = out_.toolNumbers;
+  const auto it = std::find(numbers.begin(), numbers.end(), selected_);
+  spindle_ = int(it - numbers.begin());
+  if (it == numbers.end()) {
+    out_.toolNumbers.push_back(selected_);
+    out_.path.cutters.push_back(tools.at(selected_));
+  }
+}
+
+int GcodeInterpreter::toolIndex() {
+  if (options_.tools.empty()) return 0;
+  if (spindle_ < 0 && options_.tools.size() == 1 && out_.toolNumbers.empty()) {
+    out_.toolNumbers.push_back(options_.tools.begin()->first);
+    out_.path.cutters.push_back(options_.tools.begin()->second);
+    spindle_ = 0;
+  }
+  if (spindle_ < 0)
+    throw InputError(where_, fmt::format("cutting move with no tool in the spindle: give T.. M6 "
+                                         "first (the job's \"tools\" has {})",
+                                         options_.tools.size()));
+  return spindle_;
+}
+
+// --- A block. -------------------------------------------------------------------
+
+bool GcodeInterpreter::block(const GcodeBlock& b, int64_t line) {
+  where_ = source_ + ":" + std::to_string(line);
+  line_ = line;
+  if (b.kind == GcodeBlock::Kind::Percent) return ++percentLines_ < 2;  // the closing '%'
+  if (b.kind == GcodeBlock::Kind::Empty) return true;
+  Groups g;
+  classifyG(b, g);
+  // In LinuxCNC's order of execution: feed, speed, tool, M words, modes, then motion.
+  if (b.given('F')) ignore("F", "feed rate (G93/G94/G95 feeds change no geometry)");
+  if (b.given('S')) ignore("S", "spindle speed");
+  runM(b, g);
+  selectTool(b, g.change);
+  if (g.plane != -1) plane_ = g.plane / 10;
+  if (g.units != -1) {
+    const double scale = g.units == 200 ? 25.4 : 1.0;
+    if (scale != scale_ && firstMoveLine_ != 0)
+      throw InputError(where_, fmt::format("mixed units: {} after moves in {} since line {}; a "
+                                           "file must use one unit",
+                                           codeText('G', g.units),
+                                           scale_ == 1 ? "mm (G21)" : "inches (G20)",
+                                           firstMoveLine_));
+    scale_ = scale;
+  }
+  if (g.compensation != -1) ignore("G40", "cutter compensation off (the default)");
+  if (g.length != -1)
+    ignore(codeText('G', g.length), "tool length compensation: Z is the tool tip already");
+  if (b.given('H')) ignore("H", "tool length offset number");
+  if (b.given('D')) ignore("D", "cutter radius offset number");
+  if (g.tcp != -1 && (g.tcp == 1) != tcp_) {
+    // X Y Z change meaning (tip or joints): they must be given again before cutting.
+    tcp_ = g.tcp == 1;
+    known_ = {};
+  }
+  if (g.offset != -1) workOffset_ = (g.offset - 540) / 10;
+  if (g.pathMode == 640 && b.given('P'))
+    out_.warnings.add(where_, fmt::format("G64 P{:g}: the machine may round corners by up to "
+                                          "that; scallop follows the programmed path exactly",
+                                          b.at('P')));
+  else if (g.pathMode != -1)
+    ignore(codeText('G', g.pathMode), "path control (exact stop or blending)");
+  if (g.distance != -1) absolute_ = g.distance == 900;
+  if (g.arcDistance != -1) arcAbsolute_ = g.arcDistance == 901;
+  if (g.feed != -1) ignore(codeText('G', g.feed), "feed mode");
+  if (g.retract != -1) retractToInitial_ = g.retract == 980;
+  if (g.nonModal == 40) ignore("G4", "dwell");
+  if (g.nonModal == 280 || g.nonModal == 300)
+    home(b, g.nonModal);
+  else
+    motion(b, g);
+  if (g.end) {
+    ignore(gcodeWordText('M', b.m.back()), "program end: the lines after it are not read");
+    return false;
+  }
+  return true;
+}
+
+void GcodeInterpreter::finish() {
+  if (out_.path.moves.empty())
+    throw InputError(source_, "no moves found (G0/G1/G2/G3 or a drilling cycle with X, Y, Z)");
+}
+
+// --- Positions and moves. -------------------------------------------------------
+
+GcodeInterpreter::State GcodeInterpreter::target(const GcodeBlock& b, bool machineFrame,
+                                                 std::array<bool, 3>& known) const {
+  State t = state_;
+  known = known_;
+  const Vec3& offset = options_.workOffsets[size_t(workOffset_)];
+  for (int a = 0; a < 3; ++a) {
+    const char letter = "XYZ"[a];
+    if (!b.given(letter)) continue;
+    const double v = b.at(letter) * scale_;
+    double& c = component(t.pos, a);
+    if (machineFrame) {
+      c = v;
+    } else if (absolute_) {
+      c = v + component(offset, a);
+    } else {
+      if (!known_[size_t(a)])
+        throw InputError(where_, fmt::format("incremental {} (G91) from an unknown position", letter));
+      c += v;
+    }
+    known[size_t(a)] = true;
+  }
+  const bool bc = options_.machine &&
+                  options_.machine->geometry.kinematics == RotaryKinematics::TableBC;
+  const char tiltLetter = bc ? 'B' : 'A';
+  for (char letter : {'A', 'B', 'C'}) {
+    if (!b.given(letter)) continue;
+    if (!options_.machine)
+      throw InputError(where_, fmt::format("rotary word {}{:g}: the job has no \"machine\" "
+                                           "(5-axis kinematics, CONVENTIONS.md \"Machines\")",
+                                           letter, b.at(letter)));
+    if (letter != 'C' && letter != tiltLetter)
+      throw InputError(where_, fmt::format("rotary word {}: the machine ({}) has axes {} and C",
+                                           letter, bc ? "xyzbc-trt" : "xyzac-trt", tiltLetter));
+    const double radians = b.at(letter) * kPi / 180;
+    double& angle = letter == 'C' ? t.spin : t.tilt;
+    angle = absolute_ || machineFrame ? radians : angle + radians;
+  }
+  return t;
+}
+
+Pose GcodeInterpreter::poseOf(const State& s) const {
+  if (!options_.machine) return {s.pos, {0, 0, 1}};
+  const TableMachine& m = options_.machine->geometry;
+  const Vec3 axis = machineAxis(m.kinematics, s.tilt, s.spin);
+  if (axis.z < 0)
+    throw InputError(where_, fmt::format("the tilt {:g} deg points the tool below the horizontal: "
+                                         "a height map seen from above cannot show what it cuts",
+                                         s.tilt * 180 / kPi));
+  return {tcp_ ? s.pos : machineTip(m, s.pos, s.tilt, s.spin), axis};
+}
+
+void GcodeInterpreter::moveTo(const State& to, bool rapid) {
+  const bool turns = to.tilt != state_.tilt || to.spin != state_.spin;
+  if (to.pos == state_.pos && !turns) return;
+  out_.addMove(poseOf(state_), poseOf(to), rapid, line_);
+  Move& mv = out_.path.moves.back();
+  mv.tool = uint16_t(rapid ? std::max(spindle_, 0) : toolIndex());
+  if (!rapid && turns) {
+    out_.path.rotary.push_back({state_.tilt, to.tilt, state_.spin, to.spin, tcp_, state_.pos, to.pos});
+    mv.rotary = uint32_t(out_.path.rotary.size());
+  }
+  if (firstMoveLine_ == 0) firstMoveLine_ = line_;
+  state_ = to;
+}
+
+void GcodeInterpreter::motion(const GcodeBlock& b, const Groups& g) {
+  const bool machineFrame = g.nonModal == 530;
+  const bool axes = b.given('X') || b.given('Y') || b.given('Z') || b.given('A') ||
+                    b.given('B') || b.given('C');
+  if (g.motion == 800) {
+    motion_ = -1;
+    if (axes) throw InputError(where_, "axis words with G80 (cancel the cycle)");
+    return;
+  }
+  if (g.motion != -1) motion_ = g.motion;
+  if (motion_ >= 730) {
+    if (machineFrame) throw InputError(where_, "G53 in a drilling cycle");
+    if (g.motion != -1 || axes) cycle(b);
+    return;
+  }
+  const bool arcWords = b.given('I') || b.given('J') || b.given('K') || b.given('R');
+  if (!axes && !arcWords) {
+    if (machineFrame) throw InputError(where_, "G53 without axis words");
+    return;
+  }
+  if (motion_ == -1)
+    throw InputError(where_, "coordinates before any motion word (G0, G1, G2 or G3)");
+  if (arcWords && motion_ < 20)
+    throw InputError(where_, fmt::format("I, J, K and R belong to arcs (G2/G3), not {}",
+                                         codeText('G', motion_)));
+  if (machineFrame && (motion_ > 10 || !absolute_))
+    throw InputError(where_, "G53 (machine coordinates) needs G0 or G1 and G90");
+  std::array<bool, 3> knownAfter;
+  const State to = target(b, machineFrame, knownAfter);
+  const bool startKnown = known_[0] && known_[1] && known_[2];
+  if (motion_ == 0) {
+    if (startKnown)
+      moveTo(to, true);
+    else
+      state_ = to;
+  } else {
+    if (!startKnown)
+      throw InputError(where_, "cutting move from an unknown position: give X, Y and Z first "
+                               "(e.g. in a G0)");
+    if (motion_ == 10)
+      moveTo(to, false);
+    else
+      arc(b, to);
+  }
+  known_ = knownAfter;
+}
+
+void GcodeInterpreter::home(const GcodeBlock& b, int code) {
+  if (b.given('A') || b.given('B') || b.given('C'))
+    throw InputError(where_, codeText('G', code) + " with rotary words is not supported");
+  std::array<bool, 3> knownAfter;
+  const State via = target(b, false, knownAfter);
+  const bool named = b.given('X') || b.given('Y') || b.given('Z');
+  if (named && known_[0] && known_[1] && known_[2]) moveTo(via, true);
+  state_ = via;
+  std::string axes;
+  for (int a = 0; a < 3; ++a) {
+    if (named && !b.given("XYZ"[a])) continue;
+    knownAfter[size_t(a)] = false;
+    axes += "XYZ"[a];
+  }
+  known_ = knownAfter;
+  out_.warnings.add(where_, fmt::format("{} (return home): followed as a rapid to the "
+                                        "intermediate point; home is the machine's own "
+                                        "position, so {} stay unknown until a move gives them",
+                                        codeText('G', code), axes));
+}
+
+void GcodeInterpreter::arc(const GcodeBlock& b, const State& to) {
+  if (to.tilt != state_.tilt || to.spin != state_.spin)
+    throw InputError(where_, "an arc (G2/G3) cannot move the rotary axes");
+  int iu, iv, iw;
+  arcPlaneAxes(plane_, iu, iv, iw);
+  const char offU = "IJK"[iu], offV = "IJK"[iv], offW = "IJK"[iw];
+  if (b.given(offW))
+    throw InputError(where_, fmt::format("{} is not an offset in the G{} plane", offW, plane_));
+  ArcSpec a;
+  a.start = state_.pos;
+  a.end = to.pos;
+  a.plane = plane_;
+  a.ccw = motion_ == 30;
+  if (b.given('R')) {
+    if (b.given(offU) || b.given(offV))
+      throw InputError(where_, "an arc takes either R or I/J/K offsets, not both");
+    a.hasRadius = true;
+    a.radius = b.at('R') * scale_;
+  } else if (arcAbsolute_) {
+    if (!b.given(offU) || !b.given(offV))
+      throw InputError(where_, fmt::format("arc (G90.1, absolute centre) needs both {} and {}",
+                                           offU, offV));
+    const Vec3& offset = options_.workOffsets[size_t(workOffset_)];
+    a.centreU = b.at(offU) * scale_ + component(offset, iu);
+    a.centreV = b.at(offV) * scale_ + component(offset, iv);
+  } else {
+    if (!b.given(offU) && !b.given(offV))
+      throw InputError(where_, fmt::format("arc ({}) needs a centre offset {}/{} or a radius R",
+                                           codeText('G', motion_), offU, offV));
+    a.centreU = component(a.start, iu) + (b.given(offU) ? b.at(offU) * scale_ : 0.0);
+    a.centreV = component(a.start, iv) + (b.given(offV) ? b.at(offV) * scale_ : 0.0);
+  }
+  for (const Vec3& p : arcChords(a, options_.arcTolerance, where_))
+    moveTo({p, state_.tilt, state_.spin}, false);
+}
+
+// --- Canned cycles (gcode_cycles.h). ----------------------------------------------
+
+void GcodeInterpreter::cycle(const GcodeBlock& b) {
+  const std::string name = codeText('G', motion_);
+  if (plane_ != 17) throw InputError(where_, name + ": drilling cycles are read in G17 only");
+  if (b.given('A') || b.given('B') || b.given('C') || b.given('I') || b.given('J') ||
+      b.given('K'))
+    throw InputError(where_, name + ": a drilling cycle takes X Y Z R Q P L F, not A B C I J K");
+  if (!(known_[0] && known_[1] && known_[2]))
+    throw InputError(where_, name + " from an unknown position: give X, Y and Z first");
+  if (b.given('R')) cycleR_ = b.at('R'), haveR_ = true;
+  if (b.given('Z')) cycleZ_ = b.at('Z'), haveZ_ = true;
+  if (b.given('Q')) cycleQ_ = b.at('Q'), haveQ_ = true;
+  if (!haveR_ || !haveZ_)
+    throw InputError(where_, name + " needs Z (the hole bottom) and R (the retract level)");
+  const bool pecks = motion_ == 730 || motion_ == 830;
+  if (pecks && !(haveQ_ && cycleQ_ > 0))
+    throw InputError(where_, name + " needs a peck depth Q > 0");
+  double repeats = 1;
+  if (b.given('L')) {
+    repeats = b.at('L');
+    if (!(repeats >= 0 && repeats <= 1e4 && repeats == std::floor(repeats)))
+      throw InputError(where_, "L (repeats) must be a whole number in [0, 10000]");
+  }
+  const Vec3& offset = options_.workOffsets[size_t(workOffset_)];
+  const double initialZ = state_.pos.z;
+  DrillCycle c;
+  c.code = motion_;
+  c.clearZ = absolute_ ? cycleR_ * scale_ + offset.z : initialZ + cycleR_ * scale_;
+  c.bottomZ = absolute_ ? cycleZ_ * scale_ + offset.z : c.clearZ + cycleZ_ * scale_;
+  c.retractZ = retractToInitial_ ? std::max(initialZ, c.clearZ) : c.clearZ;
+  c.peck = cycleQ_ * scale_;
+  if (c.bottomZ > c.clearZ)
+    throw InputError(where_, fmt::format("{}: the hole bottom Z = {:g} mm is above the R level "
+                                         "{:g} mm",
+                                         name, c.bottomZ, c.clearZ));
+  if (pecks && (c.clearZ - c.bottomZ) / c.peck > 1e5)
+    throw InputError(where_, name + ": more than 100000 pecks of Q in the hole");
+  for (int rep = 0; rep < int(repeats); ++rep) {
+    double x = state_.pos.x, y = state_.pos.y;
+    if (absolute_) {
+      if (b.given('X')) x = b.at('X') * scale_ + offset.x;
+      if (b.given('Y')) y = b.at('Y') * scale_ + offset.y;
+    } else {
+      if (b.given('X')) x += b.at('X') * scale_;
+      if (b.given('Y')) y += b.at('Y') * scale_;
+    }
+    drillHole(c, state_.pos, x, y,
+              [&](const Vec3& p, bool rapid) { moveTo({p, state_.tilt, state_.spin}, rapid); });
+  }
+}
+
+}  // namespace scallop
