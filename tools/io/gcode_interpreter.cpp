@@ -292,18 +292,19 @@ GcodeInterpreter::State GcodeInterpreter::target(const GcodeBlock& b, bool machi
     double& angle = letter == 'C' ? t.spin : t.tilt;
     angle = absolute_ || machineFrame ? radians : angle + radians;
   }
+  if (options_.machine &&
+      machineAxis(options_.machine->geometry.kinematics, t.tilt, t.spin).z < 0)
+    throw InputError(where_, fmt::format("the tilt {:g} deg points the tool below the horizontal: "
+                                         "a height map seen from above cannot show what it cuts",
+                                         t.tilt * 180 / kPi));
   return t;
 }
 
 Pose GcodeInterpreter::poseOf(const State& s) const {
   if (!options_.machine) return {s.pos, {0, 0, 1}};
   const TableMachine& m = options_.machine->geometry;
-  const Vec3 axis = machineAxis(m.kinematics, s.tilt, s.spin);
-  if (axis.z < 0)
-    throw InputError(where_, fmt::format("the tilt {:g} deg points the tool below the horizontal: "
-                                         "a height map seen from above cannot show what it cuts",
-                                         s.tilt * 180 / kPi));
-  return {tcp_ ? s.pos : machineTip(m, s.pos, s.tilt, s.spin), axis};
+  return {tcp_ ? s.pos : machineTip(m, s.pos, s.tilt, s.spin),
+          machineAxis(m.kinematics, s.tilt, s.spin)};
 }
 
 void GcodeInterpreter::moveTo(const State& to, bool rapid) {
