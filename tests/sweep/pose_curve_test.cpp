@@ -1,0 +1,159 @@
+// PoseCurve's machine kinds (sweep/pose_curve.h): the table-table forward kinematics
+// against LinuxCNC's trtfuncs formulas written out here term by term, and the tip's
+// velocity and its proven acceleration and jerk bounds against finite differences.
+#include "sweep/pose_curve.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace scallop {
+namespace {
+
+// xyzbcKinematicsForward / xyzacKinematicsForward as trtfuncs.c writes them (offsets
+// x/y/z, the z offset including the tool offset), angles in radians.
+Vec3 trtForward(const TableMachine& m, const Vec3& j, double tilt, double c) {
+  const double xr = m.pivot.x, yr = m.pivot.y, zr = m.pivot.z;
+  const double dx = m.offset.x, dy = m.offset.y, dz = m.offset.z;
+  const double sc = std::sin(c), cc = std::cos(c), st = std::sin(tilt), ct = std::cos(tilt);
+  if (m.kinematics == RotaryKinematics::TableBC)
+    return {cc * ct * (j.x - dx - xr) + sc * (j.y - yr) - cc * st * (j.z - dz - zr) + cc * dx + xr,
+            -sc * ct * (j.x - dx - xr) + cc * (j.y - yr) + sc * st * (j.z - dz - zr) - sc * dx + yr,
+            st * (j.x - dx - xr) + ct * (j.z - dz - zr) + dz + zr};
+  return {cc * (j.x - xr) + sc * ct * (j.y - dy - yr) + sc * st * (j.z - dz - zr) + sc * dy + xr,
+          -sc * (j.x - xr) + cc * ct * (j.y - dy - yr) + cc * st * (j.z - dz - zr) + cc * dy + yr,
+          -st * (j.y - dy - yr) + ct * (j.z - dz - zr) + dz + zr};
+}
+
+// CONVENTIONS.md "Machines": the tool axis in the part frame.
+Vec3 conventionAxis(RotaryKinematics k, double tilt, double c) {
+  if (k == RotaryKinematics::TableBC)
+    return {-std::cos(c) * std::sin(tilt), std::sin(c) * std::sin(tilt), std::cos(tilt)};
+  return {std::sin(c) * std::sin(tilt), std::cos(c) * std::sin(tilt), std::cos(tilt)};
+}
+
+struct Case {
+  TableMachine machine;
+  RotaryMotion motion;
+};
+
+Case randomCase(std::mt19937_64& rng, int k) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  Case c;
+  c.machine.kinematics = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
+  c.machine.pivot = {20 * u(rng), 20 * u(rng), 20 * u(rng)};
+  c.machine.offset = {5 * u(rng), 5 * u(rng), 50 + 20 * u(rng)};
+  RotaryMotion& m = c.motion;
+  m.tcp = false;
+  m.tilt0 = 0.8 * u(rng), m.tilt1 = m.tilt0 + 0.6 * u(rng);
+  m.spin0 = 3 * u(rng), m.spin1 = m.spin0 + 1.5 * u(rng);
+  m.joints0 = {30 * u(rng), 30 * u(rng), 30 * u(rng)};
+  m.joints1 = m.joints0 + Vec3{10 * u(rng), 10 * u(rng), 10 * u(rng)};
+  return c;
+}
+
+TEST(PoseCurve, ForwardKinematicsAreTrtfuncs) {
+  std::mt19937_64 rng(7);
+  for (int k = 0; k < 200; ++k) {
+    const Case c = randomCase(rng, k);
+    const RotaryMotion& m = c.motion;
+    const PoseCurve curve = PoseCurve::jointLinear(c.machine, m);
+    ASSERT_FALSE(curve.linearTip());
+    for (double t : {0.0, 0.3, 0.71, 1.0}) {
+      const Vec3 j = m.joints0 + (m.joints1 - m.joints0) * t;
+      const double tilt = m.tilt0 + (m.tilt1 - m.tilt0) * t, spin = m.spin0 + (m.spin1 - m.spin0) * t;
+      const Vec3 want = trtForward(c.machine, j, tilt, spin), got = curve.tip(t);
+      EXPECT_NEAR(length(got - want), 0, 1e-12 * (1 + length(want))) << k << " t " << t;
+      EXPECT_NEAR(length(machineTip(c.machine, j, tilt, spin) - want), 0, 1e-12 * (1 + length(want)));
+      const Vec3 a = curve.axis(t), wantAxis = conventionAxis(c.machine.kinematics, tilt, spin);
+      EXPECT_NEAR(length(a - wantAxis), 0, 1e-14) << k;
+    }
+  }
+}
+
+// At zero angles the table is square: the tip is the joints (LinuxCNC's home pose).
+TEST(PoseCurve, ForwardKinematicsAtZeroAnglesIsTheIdentity) {
+  TableMachine m;
+  m.pivot = {3, -4, 5};
+  m.offset = {1, 2, 60};
+  for (RotaryKinematics k : {RotaryKinematics::TableBC, RotaryKinematics::TableAC}) {
+    m.kinematics = k;
+    const Vec3 tip = machineTip(m, {7, 8, 9}, 0, 0);
+    EXPECT_NEAR(length(tip - Vec3{7, 8, 9}), 0, 1e-13);
+  }
+}
+
+// Velocity against a central difference, and |tip''|, |tip'''| by finite differences
+// below the bounds at every sample.
+TEST(PoseCurve, TipVelocityAndBoundsAgreeWithFiniteDifferences) {
+  std::mt19937_64 rng(11);
+  double worstAccelRatio = 0, worstJerkRatio = 0;
+  for (int k = 0; k < 100; ++k) {
+    const Case c = randomCase(rng, k);
+    const PoseCurve curve = PoseCurve::jointLinear(c.machine, c.motion);
+    const double accel = curve.tipAccelBound(), jerk = curve.tipJerkBound();
+    ASSERT_GT(accel, 0);
+    ASSERT_GT(jerk, 0);
+    auto f = [&](double t) { return curve.tip(t); };
+    for (int s = 0; s <= 400; ++s) {
+      const double t = 0.01 + 0.98 * s / 400.0;
+      const double h1 = 1e-5;
+      const Vec3 v = (f(t + h1) - f(t - h1)) / (2 * h1);
+      // Central-difference error: h^2 / 6 |tip'''|, plus round-off.
+      EXPECT_NEAR(length(curve.tipVelocity(t) - v), 0, h1 * h1 * jerk + 1e-8 * (1 + length(v)))
+          << k;
+      const double h2 = 1e-3;
+      const Vec3 a = (f(t + h2) - f(t) * 2 + f(t - h2)) / (h2 * h2);
+      const Vec3 j = (f(t + 2 * h2) - f(t + h2) * 2 + f(t - h2) * 2 - f(t - 2 * h2)) /
+                     (2 * h2 * h2 * h2);
+      // Differences of degree n are a mean of the n-th derivative: within the bound
+      // up to round-off (the slack is far below the bounds, of order 1e2 to 1e4).
+      EXPECT_LE(length(a), accel * (1 + 1e-6) + 1e-4) << k << " t " << t;
+      EXPECT_LE(length(j), jerk * (1 + 1e-6) + 1e-2) << k << " t " << t;
+      worstAccelRatio = std::fmax(worstAccelRatio, length(a) / accel);
+      worstJerkRatio = std::fmax(worstJerkRatio, length(j) / jerk);
+    }
+  }
+  std::printf("tip'' / bound up to %.3f, tip''' / bound up to %.3f\n", worstAccelRatio,
+              worstJerkRatio);
+}
+
+// A pure spin of a horizontal lever: |tip''| = wC^2 |q| exactly, the bound itself.
+TEST(PoseCurve, AccelerationBoundIsTightForAPureSpin) {
+  TableMachine m;  // pivot and offsets zero: tip = Rz(-C) Ry(-B) joints
+  RotaryMotion r;
+  r.tcp = false;
+  r.spin0 = 0.2, r.spin1 = 1.4;
+  r.joints0 = r.joints1 = {10, 0, 0};
+  const PoseCurve curve = PoseCurve::jointLinear(m, r);
+  const double w = 1.2, h = 1e-4, t = 0.5;
+  const Vec3 a = (curve.tip(t + h) - curve.tip(t) * 2 + curve.tip(t - h)) / (h * h);
+  EXPECT_NEAR(curve.tipAccelBound(), w * w * 10, 1e-12);
+  EXPECT_NEAR(length(a), curve.tipAccelBound(), 1e-5);
+}
+
+TEST(PoseCurve, LinearTipKindsHaveZeroBounds) {
+  const Vec3 p0{1, 2, 3}, p1{4, -1, 0};
+  const PoseCurve slerp = PoseCurve::linear({p0, {0, 0, 1}}, {p1, normalize(Vec3{0.3, 0, 1})});
+  const PoseCurve rotary =
+      PoseCurve::rotary(RotaryKinematics::TableAC, p0, p1, 0.1, 0.5, -1, 2);
+  for (const PoseCurve& c : {slerp, rotary}) {
+    EXPECT_TRUE(c.linearTip());
+    EXPECT_EQ(c.tipAccelBound(), 0);
+    EXPECT_EQ(c.tipJerkBound(), 0);
+    EXPECT_EQ(c.tipVelocity(0.4), p1 - p0);
+  }
+  // TCP off with constant angles: the rotation is fixed, so the tip is a line.
+  RotaryMotion still;
+  still.tcp = false;
+  still.tilt0 = still.tilt1 = 0.3;
+  still.spin0 = still.spin1 = 1.1;
+  still.joints1 = {5, 0, 0};
+  TableMachine m;
+  m.offset = {1, 0, 40};
+  EXPECT_TRUE(PoseCurve::jointLinear(m, still).linearTip());
+}
+
+}  // namespace
+}  // namespace scallop
