@@ -371,11 +371,16 @@ void GcodeInterpreter::motion(const GcodeBlock& b, const Groups& g) {
 void GcodeInterpreter::home(const GcodeBlock& b, int code) {
   if (b.given('A') || b.given('B') || b.given('C'))
     throw InputError(where_, codeText('G', code) + " with rotary words is not supported");
-  std::array<bool, 3> knownAfter;
-  const State via = target(b, false, knownAfter);
   const bool named = b.given('X') || b.given('Y') || b.given('Z');
-  if (named && known_[0] && known_[1] && known_[2]) moveTo(via, true);
-  state_ = via;
+  const bool startKnown = known_[0] && known_[1] && known_[2];
+  std::array<bool, 3> knownAfter = known_;
+  // "G91 G28 Z0." opens many posts' programs, before any position is known: then the
+  // intermediate point is unknown too, and the axes simply go home.
+  if (absolute_ || startKnown) {
+    const State via = target(b, false, knownAfter);
+    if (named && startKnown) moveTo(via, true);
+    state_ = via;
+  }
   std::string axes;
   for (int a = 0; a < 3; ++a) {
     if (named && !b.given("XYZ"[a])) continue;
@@ -385,8 +390,8 @@ void GcodeInterpreter::home(const GcodeBlock& b, int code) {
   known_ = knownAfter;
   out_.warnings.add(where_, fmt::format("{} (return home): followed as a rapid to the "
                                         "intermediate point; home is the machine's own "
-                                        "position, so {} stay unknown until a move gives them",
-                                        codeText('G', code), axes));
+                                        "position, so {} {} unknown until a move gives them",
+                                        codeText('G', code), axes, axes.size() == 1 ? "stays" : "stay"));
 }
 
 void GcodeInterpreter::arc(const GcodeBlock& b, const State& to) {
