@@ -75,10 +75,50 @@ TEST(AptReader, MalformedInputIsNamedByLine) {
   EXPECT_NE(error("GOTO/0,0,0\nGOTO/1,0,0\nUNITS/INCHES\n").find("t.cl:3: mixed units"),
             std::string::npos);
   EXPECT_NE(error("CUTTER/6,4\nGOTO/0,0,0\n").find("t.cl:1"), std::string::npos);
-  EXPECT_NE(error("CUTTER/6\nCUTTER/8\nGOTO/0,0,0\n").find("t.cl:2: a second, different CUTTER"),
+  EXPECT_NE(error("LOADTL/x\nGOTO/0,0,0\n").find("t.cl:1: LOADTL expects a tool number"),
             std::string::npos);
   EXPECT_NE(error("1 2 3\n").find("t.cl:1: expected an APT statement"), std::string::npos);
   EXPECT_NE(error("PARTNO/X\n").find("no GOTO"), std::string::npos);
+}
+
+// A new CUTTER/ is a new tool for the moves after it; the same one again is not.
+TEST(AptReader, EachCutterCutsTheMovesAfterIt) {
+  const ToolPathFile f = parse(
+      "LOADTL/4\nCUTTER/6\nGOTO/0,0,0\nGOTO/1,0,0\nCUTTER/2,1\nGOTO/2,0,0\nCUTTER/6\n"
+      "GOTO/3,0,0\n");
+  ASSERT_EQ(f.path.cutters.size(), 2u);
+  EXPECT_EQ(f.path.cutters[0].type, CutterType::Flat);
+  EXPECT_EQ(f.path.cutters[1].type, CutterType::Ball);
+  EXPECT_EQ(f.toolNumbers, (std::vector<int64_t>{4, 5}));  // LOADTL's number, then the line
+  ASSERT_EQ(f.path.moves.size(), 3u);
+  EXPECT_EQ(f.path.moves[0].tool, 0);
+  EXPECT_EQ(f.path.moves[1].tool, 1);
+  EXPECT_EQ(f.path.moves[2].tool, 0);
+  // One cutter throughout: a single-tool file, as before.
+  EXPECT_TRUE(parse("CUTTER/6\nGOTO/0,0,0\nCUTTER/6\nGOTO/1,0,0\n").path.cutters.empty());
+}
+
+TEST(AptReader, LoadtlPicksTheJobsTools) {
+  PathFileOptions o;
+  o.tools[1] = Cutter::make(CutterType::Ball, 1);
+  o.tools[2] = Cutter::make(CutterType::Flat, 3);
+  auto read = [&](const std::string& text) {
+    std::istringstream in(text);
+    ToolPathFile out;
+    readApt(in, "t.cl", o, out);
+    return out;
+  };
+  const ToolPathFile f = read("LOADTL/2\nGOTO/0,0,0\nGOTO/1,0,0\nLOADTL/1\nGOTO/2,0,0\n");
+  EXPECT_EQ(f.toolNumbers, (std::vector<int64_t>{2, 1}));
+  EXPECT_EQ(f.path.moves[0].tool, 0);
+  EXPECT_EQ(f.path.moves[1].tool, 1);
+  EXPECT_EQ(f.path.cutters[0].radius, 3);
+  EXPECT_NE(inputErrorMessage([&] { read("GOTO/0,0,0\nLOADTL/3\n"); })
+                .find("t.cl:2: LOADTL/3: tool 3 is not in the job's \"tools\" (it has 1, 2)"),
+            std::string::npos);
+  EXPECT_NE(inputErrorMessage([&] { read("GOTO/0,0,0\nGOTO/1,0,0\n"); })
+                .find("t.cl:2: a cutting move before any LOADTL/"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -119,7 +119,7 @@ TEST_F(PathFile, MalformedFilesExitOneNamingTheLineWithoutOutput) {
   // File, content, and what the message must say (file:line: ...).
   const char* cases[][3] = {
       {"bad.nc", "G0 X0 Y0 Z0\nG1 X1.2.3\n", "bad.nc:2: word X1.2.3"},
-      {"g43.nc", "G0 X0 Y0 Z0\nG43\n", "g43.nc:2: unsupported G-word G43"},
+      {"g41.nc", "G0 X0 Y0 Z0\nG41\n", "g41.nc:2: G41 (cutter radius compensation)"},
       {"cut.nc", "G0 X0 Y0 Z0\nG1 X\n", "cut.nc:2: word X has no number"},
       {"mix.nc", "G0 X0 Y0 Z0\nG1 X1\nG20\n", "mix.nc:3: mixed units"},
       {"arc.nc", "G0 X0 Y0 Z0\nG2 X2 Y0 I1.5 J0\n", "arc.nc:2: arc radii differ"},

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <istream>
@@ -81,7 +82,8 @@ bool isIdentifier(const std::string& word) {
 
 class AptParser {
  public:
-  AptParser(const std::string& source, ToolPathFile& out) : source_(source), out_(out) {}
+  AptParser(const std::string& source, const PathFileOptions& options, ToolPathFile& out)
+      : source_(source), options_(options), out_(out) {}
 
   void statement(const Statement& st) {
     where_ = source_ + ":" + std::to_string(st.line);
@@ -97,6 +99,8 @@ class AptParser {
       cutter(st);
     } else if (m == "UNITS") {
       units(st);
+    } else if (m == "LOADTL") {
+      loadTool(st);
     } else if (m == "MULTAX" || m == "FEDRAT" || m == "PARTNO" || m == "PPRINT" || m == "SPINDL" ||
                m == "COOLNT" || m == "CLPRNT" || m == "FINI" || m == "END") {
       // No effect on the swept geometry (MULTAX only announces i, j, k on GOTO).
@@ -107,7 +111,11 @@ class AptParser {
 
   void finish() {
     if (!havePose_) throw InputError(source_, "no GOTO statement found");
-    if (out_.path.moves.empty()) out_.addMove(pose_, pose_, false, poseLine_);
+    if (out_.path.moves.empty()) addMove(pose_, pose_, false, poseLine_);
+    if (options_.tools.empty() && cutters_.size() > 1) {
+      out_.path.cutters = cutters_;
+      out_.toolNumbers = numbers_;
+    }
   }
 
  private:
@@ -133,7 +141,7 @@ class AptParser {
       pose.axis = fileAxis({v[3], v[4], v[5]}, where_);
     }
     if (havePose_ && !from) {
-      out_.addMove(pose_, pose, rapidNext_, st.line);
+      addMove(pose_, pose, rapidNext_, st.line);
       if (firstMoveLine_ == 0) firstMoveLine_ = st.line;
     }
     if (!from) rapidNext_ = false;
@@ -171,14 +179,60 @@ class AptParser {
                             : corner == radius ? CutterType::Ball
                                                : CutterType::Bull;
     const Cutter c = Cutter::make(type, radius, corner, flute, where_ + ": CUTTER");
-    if (out_.cutter) {
-      const Cutter& o = *out_.cutter;
-      if (o.type != c.type || o.radius != c.radius || o.cornerRadius != c.cornerRadius ||
-          o.fluteLength != c.fluteLength)
-        throw InputError(where_, "a second, different CUTTER: one tool per path file");
-      return;
+    if (!out_.cutter) out_.cutter = c;
+    if (!options_.tools.empty()) return;  // LOADTL picks the job's cutter
+    // A new cutter is a new tool for the moves after it (the first serves those before).
+    auto same = [&](const Cutter& o) {
+      return o.type == c.type && o.radius == c.radius && o.cornerRadius == c.cornerRadius &&
+             o.fluteLength == c.fluteLength;
+    };
+    const auto it = std::find_if(cutters_.begin(), cutters_.end(), same);
+    tool_ = uint16_t(it - cutters_.begin());
+    if (it == cutters_.end()) {
+      cutters_.push_back(c);
+      numbers_.push_back(loaded_ >= 0 ? loaded_ : st.line);
     }
-    out_.cutter = c;
+    loaded_ = -1;  // a LOADTL numbers the one CUTTER/ after it
+  }
+
+  void loadTool(const Statement& st) {
+    double v = -1;
+    if (st.args.empty() || !parseDecimal(st.args[0], v) || !(v >= 0 && v <= 1e9) ||
+        v != std::floor(v))
+      throw InputError(where_, "LOADTL expects a tool number, e.g. LOADTL/1");
+    loaded_ = int64_t(v);
+    const auto& tools = options_.tools;
+    if (tools.empty()) return;
+    if (!tools.count(loaded_)) {
+      std::string have;
+      for (const auto& [number, cutter] : tools)
+        have += (have.empty() ? "" : ", ") + std::to_string(number);
+      throw InputError(where_, fmt::format("LOADTL/{}: tool {} is not in the job's \"tools\" (it "
+                                           "has {})",
+                                           loaded_, loaded_, have));
+    }
+    const auto it = std::find(out_.toolNumbers.begin(), out_.toolNumbers.end(), loaded_);
+    tool_ = uint16_t(it - out_.toolNumbers.begin());
+    if (it == out_.toolNumbers.end()) {
+      out_.toolNumbers.push_back(loaded_);
+      out_.path.cutters.push_back(tools.at(loaded_));
+    }
+    haveTool_ = true;
+  }
+
+  void addMove(const Pose& from, const Pose& to, bool rapid, int64_t line) {
+    const auto& tools = options_.tools;
+    if (!tools.empty() && !haveTool_ && !rapid) {
+      if (tools.size() != 1)
+        throw InputError(where_, fmt::format("a cutting move before any LOADTL/: the job's "
+                                             "\"tools\" has {}",
+                                             tools.size()));
+      out_.toolNumbers.push_back(tools.begin()->first);
+      out_.path.cutters.push_back(tools.begin()->second);
+      haveTool_ = true;
+    }
+    out_.addMove(from, to, rapid, line);
+    out_.path.moves.back().tool = tool_;
   }
 
   void units(const Statement& st) {
@@ -195,7 +249,15 @@ class AptParser {
   }
 
   const std::string& source_;
+  const PathFileOptions& options_;
   ToolPathFile& out_;
+  // Tools: the cutters met (without the job's tools) with their numbers, the tool index
+  // of the moves now, the LOADTL number in effect.
+  std::vector<Cutter> cutters_;
+  std::vector<int64_t> numbers_;
+  uint16_t tool_ = 0;
+  int64_t loaded_ = -1;
+  bool haveTool_ = false;
   std::string where_;
   double scale_ = 1;  // mm per file unit
   bool rapidNext_ = false;
@@ -207,8 +269,13 @@ class AptParser {
 }  // namespace
 
 void readApt(std::istream& in, const std::string& source, ToolPathFile& out) {
+  readApt(in, source, PathFileOptions(), out);
+}
+
+void readApt(std::istream& in, const std::string& source, const PathFileOptions& options,
+             ToolPathFile& out) {
   out.format = "apt";
-  AptParser parser(source, out);
+  AptParser parser(source, options, out);
   Statement st;
   int64_t lineNo = 0;
   while (nextStatement(in, source, lineNo, st)) parser.statement(st);

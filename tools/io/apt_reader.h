@@ -11,12 +11,19 @@
 //                       bull; also the 7-value form d,r,e,f,a,b,h of a torus end mill
 //                       (e = d/2 - r, f = r, a = b = 0; h = flute length)
 //   UNITS/MM, UNITS/INCHES   lengths in inches are converted to mm
+//   LOADTL/n            tool change: with the job's "tools" (PathFileOptions::tools) the
+//                       moves after it cut with tool n (not in tools: an error naming
+//                       the line); without, it only numbers the CUTTER/ that follows
 //   MULTAX[/ON|OFF], FEDRAT, PARTNO, PPRINT, SPINDL, COOLNT, CLPRNT, FINI, END
 //                       accepted, no effect on the geometry
+// Tool changes: without the job's "tools", a CUTTER/ that differs from the one before
+// is a new tool for the moves after it (path.cutters, Move::tool; the moves before the
+// first CUTTER/ cut with it); a file of one cutter leaves path.cutters empty and
+// `cutter` set. With "tools", LOADTL/n picks the cutter and CUTTER/ only describes it.
 // Any other statement is ignored with a warning naming its line. Errors (InputError
 // "file:line"): malformed numbers, wrong argument counts, a zero axis, a continuation
-// at the end of the file, a unit change after the first move, a second CUTTER/ that
-// differs from the first.
+// at the end of the file, a unit change after the first move, a LOADTL/ number missing
+// from the job's tools, a GOTO with several tools and none loaded.
 #pragma once
 
 #include <iosfwd>
@@ -26,6 +33,8 @@
 
 namespace scallop {
 
+void readApt(std::istream& in, const std::string& source, const PathFileOptions& options,
+             ToolPathFile& out);
 void readApt(std::istream& in, const std::string& source, ToolPathFile& out);
 
 }  // namespace scallop

@@ -226,7 +226,7 @@ ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& op
   if (ext == ".txt" || (ext == ".cl" && looksLikeClText(in))) {
     readClText(in, path, file);
   } else if (ext == ".cl" || ext == ".apt" || ext == ".cls") {
-    readApt(in, path, file);
+    readApt(in, path, options, file);
   } else if (ext == ".nc" || ext == ".ngc" || ext == ".gcode" || ext == ".tap") {
     readGcode(in, path, options, file);
   } else {
