@@ -124,8 +124,7 @@ MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path,
   for (size_t k = 0; k < path.moves.size(); ++k) {
     const Move& mv = path.moves[k];
     if (mv.rapid) continue;
-    ToolPath one;
-    one.moves.push_back(mv);
+    const ToolPath one = path.single(k);
     // A cheap xy box first: the tip's path grown by the cutter's reach.
     const double lean = std::max(std::hypot(mv.from.axis.x, mv.from.axis.y),
                                  std::hypot(mv.to.axis.x, mv.to.axis.y));

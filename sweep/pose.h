@@ -59,6 +59,9 @@ struct ToolPath {
   std::vector<RotaryMotion> rotary;
   TableMachine machine;
   size_t cuttingMoves() const;
+  // The path of move k alone, with its cutter and machine motion (for sweeping one
+  // move apart from the others).
+  ToolPath single(size_t k) const;
 };
 
 }  // namespace scallop

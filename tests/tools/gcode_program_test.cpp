@@ -264,6 +264,11 @@ TEST(GcodeProgram, TcpOnMovesAreTheRotaryPoseCurve) {
   EXPECT_EQ(f.path.moves[1].rotary, 0u);
   EXPECT_EQ(f.path.moves[1].from.axis, f.path.moves[1].to.axis);
   EXPECT_EQ(unsweptMove(f.path), f.path.moves.size());
+  // One move apart from the path (the design report's gouge finder) keeps its motion.
+  const ToolPath one = f.path.single(0);
+  const std::vector<SweptMove> swept = sweepToolPath(Cutter::make(CutterType::Ball, 1), one);
+  ASSERT_EQ(swept.size(), 1u);
+  EXPECT_EQ(swept[0].curve().axis(0.5), half);
 }
 
 TEST(GcodeProgram, TcpOffMovesFollowTheForwardKinematics) {

@@ -30,6 +30,15 @@ void readPathFile(Job& job) {
     for (const Cutter& c : read.path.cutters)
       if (c.radius + c.fluteLength > job.cutter.radius + job.cutter.fluteLength) job.cutter = c;
   }
+  if (!job.tools.empty() && !multiTool && read.path.cuttingMoves() > 0) {
+    // A file without tool changes (CL text, or APT without LOADTL) names no tool.
+    if (job.tools.size() != 1)
+      throw InputError("tools", "the " + read.format + " file " + job.pathFile +
+                                    " has no tool changes to pick one of " +
+                                    std::to_string(job.tools.size()) +
+                                    " tools; give one \"tool\" (or one entry in \"tools\")");
+    job.cutter = job.tools.begin()->second;
+  }
   if (job.hasTool && multiTool) {
     // The job's one "tool" cuts every move (the file's CUTTER/s are only checked below).
     read.path.cutters.clear();
