@@ -113,9 +113,9 @@ PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& 
 
 PoseCurve PoseCurve::jointLinear(const TableMachine& machine, const RotaryMotion& m) {
   const bool bc = machine.kinematics == RotaryKinematics::TableBC;
-  PoseCurve c = rotary(machine.kinematics, machineTip(machine, m.joints0, m.tilt0, m.spin0),
-                       machineTip(machine, m.joints1, m.tilt1, m.spin1), m.tilt0, m.tilt1,
-                       m.spin0, m.spin1);
+  PoseCurve c =
+      rotary(machine.kinematics, machineTip(machine, m.joints0, m.tilt0, m.spin0),
+             machineTip(machine, m.joints1, m.tilt1, m.spin1), m.tilt0, m.tilt1, m.spin0, m.spin1);
   if (c.omega_ == 0) return c;  // constant angles: the rotation is fixed, the tip linear
   c.kind_ = bc ? Kind::JointBC : Kind::JointAC;
   const Kinematics k = kinematicsOf(machine);

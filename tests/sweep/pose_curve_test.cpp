@@ -62,10 +62,12 @@ TEST(PoseCurve, ForwardKinematicsAreTrtfuncs) {
     ASSERT_FALSE(curve.linearTip());
     for (double t : {0.0, 0.3, 0.71, 1.0}) {
       const Vec3 j = m.joints0 + (m.joints1 - m.joints0) * t;
-      const double tilt = m.tilt0 + (m.tilt1 - m.tilt0) * t, spin = m.spin0 + (m.spin1 - m.spin0) * t;
+      const double tilt = m.tilt0 + (m.tilt1 - m.tilt0) * t,
+                   spin = m.spin0 + (m.spin1 - m.spin0) * t;
       const Vec3 want = trtForward(c.machine, j, tilt, spin), got = curve.tip(t);
       EXPECT_NEAR(length(got - want), 0, 1e-12 * (1 + length(want))) << k << " t " << t;
-      EXPECT_NEAR(length(machineTip(c.machine, j, tilt, spin) - want), 0, 1e-12 * (1 + length(want)));
+      EXPECT_NEAR(length(machineTip(c.machine, j, tilt, spin) - want), 0,
+                  1e-12 * (1 + length(want)));
       const Vec3 a = curve.axis(t), wantAxis = conventionAxis(c.machine.kinematics, tilt, spin);
       EXPECT_NEAR(length(a - wantAxis), 0, 1e-14) << k;
     }
@@ -105,8 +107,8 @@ TEST(PoseCurve, TipVelocityAndBoundsAgreeWithFiniteDifferences) {
           << k;
       const double h2 = 1e-3;
       const Vec3 a = (f(t + h2) - f(t) * 2 + f(t - h2)) / (h2 * h2);
-      const Vec3 j = (f(t + 2 * h2) - f(t + h2) * 2 + f(t - h2) * 2 - f(t - 2 * h2)) /
-                     (2 * h2 * h2 * h2);
+      const Vec3 j =
+          (f(t + 2 * h2) - f(t + h2) * 2 + f(t - h2) * 2 - f(t - 2 * h2)) / (2 * h2 * h2 * h2);
       // Differences of degree n are a mean of the n-th derivative: within the bound
       // up to round-off (the slack is far below the bounds, of order 1e2 to 1e4).
       EXPECT_LE(length(a), accel * (1 + 1e-6) + 1e-4) << k << " t " << t;
@@ -136,8 +138,7 @@ TEST(PoseCurve, AccelerationBoundIsTightForAPureSpin) {
 TEST(PoseCurve, LinearTipKindsHaveZeroBounds) {
   const Vec3 p0{1, 2, 3}, p1{4, -1, 0};
   const PoseCurve slerp = PoseCurve::linear({p0, {0, 0, 1}}, {p1, normalize(Vec3{0.3, 0, 1})});
-  const PoseCurve rotary =
-      PoseCurve::rotary(RotaryKinematics::TableAC, p0, p1, 0.1, 0.5, -1, 2);
+  const PoseCurve rotary = PoseCurve::rotary(RotaryKinematics::TableAC, p0, p1, 0.1, 0.5, -1, 2);
   for (const PoseCurve& c : {slerp, rotary}) {
     EXPECT_TRUE(c.linearTip());
     EXPECT_EQ(c.tipAccelBound(), 0);

@@ -113,11 +113,13 @@ TEST(AptReader, LoadtlPicksTheJobsTools) {
   EXPECT_EQ(f.path.moves[0].tool, 0);
   EXPECT_EQ(f.path.moves[1].tool, 1);
   EXPECT_EQ(f.path.cutters[0].radius, 3);
-  EXPECT_NE(inputErrorMessage([&] { read("GOTO/0,0,0\nLOADTL/3\n"); })
-                .find("t.cl:2: LOADTL/3: tool 3 is not in the job's \"tools\" (it has 1, 2)"),
+  EXPECT_NE(inputErrorMessage([&] {
+              read("GOTO/0,0,0\nLOADTL/3\n");
+            }).find("t.cl:2: LOADTL/3: tool 3 is not in the job's \"tools\" (it has 1, 2)"),
             std::string::npos);
-  EXPECT_NE(inputErrorMessage([&] { read("GOTO/0,0,0\nGOTO/1,0,0\n"); })
-                .find("t.cl:2: a cutting move before any LOADTL/"),
+  EXPECT_NE(inputErrorMessage([&] {
+              read("GOTO/0,0,0\nGOTO/1,0,0\n");
+            }).find("t.cl:2: a cutting move before any LOADTL/"),
             std::string::npos);
 }
 

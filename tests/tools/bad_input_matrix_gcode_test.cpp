@@ -74,20 +74,26 @@ TEST_F(BadInputMatrix, GcodePrograms) {
 
 TEST_F(BadInputMatrix, GcodeJobKeys) {
   const std::vector<BadInputRow> rows = {
-      job("tool and tools", replaced(kToolsJob, "\"tools\"", "\"tool\": {\"type\": \"ball\", "
-                                                             "\"radius\": 1}, \"tools\""),
+      job("tool and tools",
+          replaced(kToolsJob, "\"tools\"",
+                   "\"tool\": {\"type\": \"ball\", "
+                   "\"radius\": 1}, \"tools\""),
           {"tools", "not both"}),
       job("tools key not a number", replaced(kToolsJob, "\"1\"", "\"one\""), {"tools.one"}),
       job("tools key zero-padded", replaced(kToolsJob, "\"1\"", "\"01\""), {"tools.01"}),
       job("tools cutter invalid", replaced(kToolsJob, "\"radius\": 0.5", "\"radius\": -1"),
           {"tools.2.radius"}),
-      job("tools empty", replaced(kToolsJob, R"("1": {"type": "ball", "radius": 1.0}, "2": {"type": "flat", "radius": 0.5})", ""),
+      job("tools empty",
+          replaced(kToolsJob,
+                   R"("1": {"type": "ball", "radius": 1.0}, "2": {"type": "flat", "radius": 0.5})",
+                   ""),
           {"tools", "at least one"}),
       job("raster with tools",
           replaced(kToolsJob, R"({"file": "p.nc"})",
                    R"({"raster": {"direction": "x", "step_over": 0.8, "depth": 0.3}})"),
           {"tool", "\"tools\""}),
-      job("work offset G60", replaced(kToolsJob, "{\n", "{\"work_offsets\": {\"G60\": [0, 0, 0]},\n"),
+      job("work offset G60",
+          replaced(kToolsJob, "{\n", "{\"work_offsets\": {\"G60\": [0, 0, 0]},\n"),
           {"work_offsets.G60", "unknown key"}),
       job("work offset of two numbers",
           replaced(kToolsJob, "{\n", "{\"work_offsets\": {\"G55\": [0, 0]},\n"),
@@ -101,9 +107,11 @@ TEST_F(BadInputMatrix, GcodeJobKeys) {
        {"tools", "no tool changes"}},
       job("machine kinematics", replaced(kMachineJob, "xyzbc-trt", "xyzbc-hh"),
           {"machine.kinematics", "xyzbc-trt"}),
-      job("machine TCP code", replaced(kMachineJob, "\"xyzbc-trt\"", "\"xyzbc-trt\", \"tcp_on\": [\"TCP\"]"),
+      job("machine TCP code",
+          replaced(kMachineJob, "\"xyzbc-trt\"", "\"xyzbc-trt\", \"tcp_on\": [\"TCP\"]"),
           {"machine.tcp_on"}),
-      job("machine unknown key", replaced(kMachineJob, "\"xyzbc-trt\"", "\"xyzbc-trt\", \"speed\": 1"),
+      job("machine unknown key",
+          replaced(kMachineJob, "\"xyzbc-trt\"", "\"xyzbc-trt\", \"speed\": 1"),
           {"machine.speed", "unknown key"}),
   };
   for (const BadInputRow& row : rows) check(row);

@@ -111,7 +111,8 @@ TEST_F(GcodeHeights, TwoToolProgramGivesEachToolsGroove) {
   EXPECT_EQ(tools[1].at("tool").at("radius"), 0.5);
   EXPECT_EQ(tools[1].at("first_line"), 9);
   bool listedM6 = false;
-  for (const auto& w : report.at("path_file").at("ignored_words")) listedM6 |= w.at("word") == "M30";
+  for (const auto& w : report.at("path_file").at("ignored_words"))
+    listedM6 |= w.at("word") == "M30";
   EXPECT_TRUE(listedM6);
 }
 
@@ -128,7 +129,8 @@ void GcodeHeights::expectFiveAxisAgrees(bool ac) {
   std::mt19937_64 rng(ac ? 5 : 3);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int k = 0; k < 5; ++k)
-    points.push_back({0.5 + 1.2 * k, 2 + 0.6 * u(rng), -0.3 + 0.1 * u(rng), 12 * u(rng), 40 * u(rng)});
+    points.push_back(
+        {0.5 + 1.2 * k, 2 + 0.6 * u(rng), -0.3 + 0.1 * u(rng), 12 * u(rng), 40 * u(rng)});
   std::string program = "G21 G90 G94\nM428 (TCP on)\n";
   program += fmt::format("G0 X{} Y{} Z5 {}{} C{}\n", points[0].x, points[0].y, tiltLetter,
                          points[0].tilt, points[0].c);
@@ -141,7 +143,8 @@ void GcodeHeights::expectFiveAxisAgrees(bool ac) {
   const std::string kin = ac ? "xyzac-trt" : "xyzbc-trt";
   const std::string job = R"({
       "tool": {"type": "bull", "radius": 1.5, "corner_radius": 0.5},
-      "machine": {"kinematics": ")" + kin + R"(", "tcp_on": ["M428"], "tcp_off": ["M429"]},
+      "machine": {"kinematics": ")" +
+                          kin + R"(", "tcp_on": ["M428"], "tcp_off": ["M429"]},
       "stock": {"min": [0, 0, -2], "max": [6, 4, 0]},
       "grid":  {"spacing": 0.25},
       "path":  {"file": "five.ngc"}})";
@@ -155,15 +158,14 @@ void GcodeHeights::expectFiveAxisAgrees(bool ac) {
     const Point a = points[k], b = points[k + 1];
     const double t0 = round6(a.tilt) * kPi / 180, t1 = round6(b.tilt) * kPi / 180;
     const double c0 = round6(a.c) * kPi / 180, c1 = round6(b.c) * kPi / 180;
-    curves.push_back({{round6(a.x), round6(a.y), round6(a.z)},
-                      {round6(b.x), round6(b.y), round6(b.z)},
-                      [=](double t) {
-                        const double T = t0 + (t1 - t0) * t, C = c0 + (c1 - c0) * t;
-                        if (ac) return Vec3{std::sin(C) * std::sin(T), std::cos(C) * std::sin(T),
-                                            std::cos(T)};
-                        return Vec3{-std::cos(C) * std::sin(T), std::sin(C) * std::sin(T),
-                                    std::cos(T)};
-                      }});
+    curves.push_back(
+        {{round6(a.x), round6(a.y), round6(a.z)},
+         {round6(b.x), round6(b.y), round6(b.z)},
+         [=](double t) {
+           const double T = t0 + (t1 - t0) * t, C = c0 + (c1 - c0) * t;
+           if (ac) return Vec3{std::sin(C) * std::sin(T), std::cos(C) * std::sin(T), std::cos(T)};
+           return Vec3{-std::cos(C) * std::sin(T), std::sin(C) * std::sin(T), std::cos(T)};
+         }});
   }
   const GridSpec& g = map.grid();
   int compared = 0, cut = 0;

@@ -35,26 +35,26 @@ const IgnoredWords::Entry* ignored(const ToolPathFile& f, const std::string& wor
 
 // A program as a post writes it: every line but the moves is structure or modes.
 const char* kPost =
-    "%\n"                                  // 1
-    "O1000 (FINISH)\n"                     // 2
-    "N10 G90 G94 G17 G49 G40 G80\n"        // 3
-    "N20 G21\n"                            // 4
-    "N30 T1 M6\n"                          // 5
-    "N40 S10000 M3\n"                      // 6
-    "N50 G54 G0 X-2. Y0.\n"                // 7
-    "N60 G43 Z15. H1\n"                    // 8
-    "N70 M8\n"                             // 9
-    "N80 Z5.\n"                            // 10
-    "N90 G1 Z-0.25 F500.\n"                // 11
-    "N100 X8.\n"                           // 12
-    "N110 G0 Z15.\n"                       // 13
-    "N120 M9\n"                            // 14
-    "N130 G28 G91 Z0.\n"                   // 15
-    "N140 G90\n"                           // 16
-    "N150 M5\n"                            // 17
-    "N160 M30\n"                           // 18
-    "G1 X100 (after M30: not read)\n"      // 19
-    "%\n";                                 // 20
+    "%\n"                              // 1
+    "O1000 (FINISH)\n"                 // 2
+    "N10 G90 G94 G17 G49 G40 G80\n"    // 3
+    "N20 G21\n"                        // 4
+    "N30 T1 M6\n"                      // 5
+    "N40 S10000 M3\n"                  // 6
+    "N50 G54 G0 X-2. Y0.\n"            // 7
+    "N60 G43 Z15. H1\n"                // 8
+    "N70 M8\n"                         // 9
+    "N80 Z5.\n"                        // 10
+    "N90 G1 Z-0.25 F500.\n"            // 11
+    "N100 X8.\n"                       // 12
+    "N110 G0 Z15.\n"                   // 13
+    "N120 M9\n"                        // 14
+    "N130 G28 G91 Z0.\n"               // 15
+    "N140 G90\n"                       // 16
+    "N150 M5\n"                        // 17
+    "N160 M30\n"                       // 18
+    "G1 X100 (after M30: not read)\n"  // 19
+    "%\n";                             // 20
 
 TEST(GcodeProgram, APostsProgramRunsAndListsTheWordsItIgnored) {
   const ToolPathFile f = parse(kPost);
@@ -66,8 +66,8 @@ TEST(GcodeProgram, APostsProgramRunsAndListsTheWordsItIgnored) {
   EXPECT_EQ(cuts[0].from.tip, (Vec3{-2, 0, 5}));
   EXPECT_EQ(cuts[0].to.tip, (Vec3{-2, 0, -0.25}));
   EXPECT_EQ(cuts[1].to.tip, (Vec3{8, 0, -0.25}));
-  for (const char* w : {"F", "S", "M3", "M5", "M8", "M9", "G43", "G49", "G40", "G94", "H", "T",
-                        "M6", "M30"})
+  for (const char* w :
+       {"F", "S", "M3", "M5", "M8", "M9", "G43", "G49", "G40", "G94", "H", "T", "M6", "M30"})
     EXPECT_NE(ignored(f, w), nullptr) << w;
   EXPECT_EQ(ignored(f, "M8")->lines, (std::vector<int64_t>{9}));
   EXPECT_EQ(ignored(f, "F")->lines, (std::vector<int64_t>{11}));
@@ -78,8 +78,9 @@ TEST(GcodeProgram, APostsProgramRunsAndListsTheWordsItIgnored) {
 }
 
 TEST(GcodeProgram, AfterG28TheHomedAxisMustBeGivenAgain) {
-  EXPECT_NE(error("G0 X0 Y0 Z5\nG28 G91 Z0\nG90 G1 X3\n").find("p.nc:3: cutting move from an "
-                                                             "unknown position"),
+  EXPECT_NE(error("G0 X0 Y0 Z5\nG28 G91 Z0\nG90 G1 X3\n")
+                .find("p.nc:3: cutting move from an "
+                      "unknown position"),
             std::string::npos);
   EXPECT_EQ(error("G0 X0 Y0 Z5\nG28 G91 Z0\nG90 G0 Z5\nG1 X3\n"), "");
 }
@@ -150,8 +151,8 @@ PathFileOptions twoTools() {
 }
 
 TEST(GcodeProgram, EveryMoveCutsWithTheToolInTheSpindle) {
-  const ToolPathFile f = parse(
-      "T7 M6\nG0 X0 Y0 Z1\nG1 X1\nT1\nG1 X2\nM6\nG1 X3\nG0 Z5\nT7 M6\nG1 Z0\n", twoTools());
+  const ToolPathFile f =
+      parse("T7 M6\nG0 X0 Y0 Z1\nG1 X1\nT1\nG1 X2\nM6\nG1 X3\nG0 Z5\nT7 M6\nG1 Z0\n", twoTools());
   ASSERT_EQ(f.toolNumbers, (std::vector<int64_t>{7, 1}));
   ASSERT_EQ(f.path.cutters.size(), 2u);
   EXPECT_EQ(f.path.cutters[0].type, CutterType::Flat);
@@ -167,8 +168,9 @@ TEST(GcodeProgram, EveryMoveCutsWithTheToolInTheSpindle) {
 }
 
 TEST(GcodeProgram, ToolsAreCheckedAgainstTheJob) {
-  EXPECT_NE(error("G0 X0 Y0 Z1\nT3 M6\n", twoTools()).find("p.nc:2: T3 is not in the job's "
-                                                           "\"tools\" (it has 1, 7)"),
+  EXPECT_NE(error("G0 X0 Y0 Z1\nT3 M6\n", twoTools())
+                .find("p.nc:2: T3 is not in the job's "
+                      "\"tools\" (it has 1, 7)"),
             std::string::npos);
   EXPECT_NE(error("G0 X0 Y0 Z1\nG1 X1\n", twoTools()).find("p.nc:2: cutting move with no tool"),
             std::string::npos);
@@ -208,25 +210,40 @@ TEST(GcodeProgram, DrillingCyclesMakeTheirMoves) {
   expectSteps(start + "G98 G81 X5 Y2 Z-3 R1 F100\n",
               {{{5, 2, 10}, true}, {{5, 2, 1}, true}, {{5, 2, -3}, false}, {{5, 2, 10}, true}});
   // G99 retracts to R; a modal repeat drills the next hole from there.
-  expectSteps(start + "G99 G82 X5 Y2 Z-3 R1 P0.5\nX7\nG80\n",
-              {{{5, 2, 10}, true}, {{5, 2, 1}, true}, {{5, 2, -3}, false}, {{5, 2, 1}, true},
-               {{7, 2, 1}, true}, {{7, 2, -3}, false}, {{7, 2, 1}, true}});
+  expectSteps(start + "G99 G82 X5 Y2 Z-3 R1 P0.5\nX7\nG80\n", {{{5, 2, 10}, true},
+                                                               {{5, 2, 1}, true},
+                                                               {{5, 2, -3}, false},
+                                                               {{5, 2, 1}, true},
+                                                               {{7, 2, 1}, true},
+                                                               {{7, 2, -3}, false},
+                                                               {{7, 2, 1}, true}});
   // G85: feed in and out.
   expectSteps(start + "G99 G85 X5 Y2 Z-3 R1\n",
               {{{5, 2, 10}, true}, {{5, 2, 1}, true}, {{5, 2, -3}, false}, {{5, 2, 1}, false}});
   // G73: pecks of Q with a chip-breaking rapid up by kPeckClearance.
   const double c = kPeckClearance;
-  expectSteps(start + "G99 G73 X5 Y2 Z-2 R1 Q1.5\n",
-              {{{5, 2, 10}, true}, {{5, 2, 1}, true}, {{5, 2, -0.5}, false},
-               {{5, 2, -0.5 + c}, true}, {{5, 2, -2}, false}, {{5, 2, 1}, true}});
+  expectSteps(start + "G99 G73 X5 Y2 Z-2 R1 Q1.5\n", {{{5, 2, 10}, true},
+                                                      {{5, 2, 1}, true},
+                                                      {{5, 2, -0.5}, false},
+                                                      {{5, 2, -0.5 + c}, true},
+                                                      {{5, 2, -2}, false},
+                                                      {{5, 2, 1}, true}});
   // G83: out to R after each peck, back down inside the hole, on to the next depth.
-  expectSteps(start + "G99 G83 X5 Y2 Z-2 R1 Q1.5\n",
-              {{{5, 2, 10}, true}, {{5, 2, 1}, true}, {{5, 2, -0.5}, false}, {{5, 2, 1}, true},
-               {{5, 2, -0.5 + c}, false}, {{5, 2, -2}, false}, {{5, 2, 1}, true}});
+  expectSteps(start + "G99 G83 X5 Y2 Z-2 R1 Q1.5\n", {{{5, 2, 10}, true},
+                                                      {{5, 2, 1}, true},
+                                                      {{5, 2, -0.5}, false},
+                                                      {{5, 2, 1}, true},
+                                                      {{5, 2, -0.5 + c}, false},
+                                                      {{5, 2, -2}, false},
+                                                      {{5, 2, 1}, true}});
   // L repeats in G91: R from the current Z, Z from R, X Y steps from hole to hole.
-  expectSteps(start + "G91 G99 G81 X2 Z-4 R-9 L2\n",
-              {{{2, 0, 10}, true}, {{2, 0, 1}, true}, {{2, 0, -3}, false}, {{2, 0, 1}, true},
-               {{4, 0, 1}, true}, {{4, 0, -3}, false}, {{4, 0, 1}, true}});
+  expectSteps(start + "G91 G99 G81 X2 Z-4 R-9 L2\n", {{{2, 0, 10}, true},
+                                                      {{2, 0, 1}, true},
+                                                      {{2, 0, -3}, false},
+                                                      {{2, 0, 1}, true},
+                                                      {{4, 0, 1}, true},
+                                                      {{4, 0, -3}, false},
+                                                      {{4, 0, 1}, true}});
   // Below R at the start: up to R first.
   expectSteps("G0 X0 Y0 Z-1\nG98 G81 X5 Z-3 R1\n",
               {{{0, 0, 1}, true}, {{5, 0, 1}, true}, {{5, 0, -3}, false}, {{5, 0, 1}, true}});
@@ -283,8 +300,9 @@ TEST(GcodeProgram, TcpOffMovesFollowTheForwardKinematics) {
   // The angles change with TCP off: recorded, and the one move the sweep cannot do yet.
   EXPECT_FALSE(f.path.rotary.at(0).tcp);
   EXPECT_EQ(unsweptMove(f.path), 1u);
-  EXPECT_NE(inputErrorMessage([&] { sweepToolPath(Cutter::make(CutterType::Ball, 1), f.path); })
-                .find("TCP off is not simulated yet"),
+  EXPECT_NE(inputErrorMessage([&] {
+              sweepToolPath(Cutter::make(CutterType::Ball, 1), f.path);
+            }).find("TCP off is not simulated yet"),
             std::string::npos);
 }
 

@@ -34,8 +34,7 @@ std::vector<Vec3> arcChords(const ArcSpec& arc, double tol, const std::string& w
   if (arc.hasRadius) {
     const double du = eu - su, dv = ev - sv, chord = std::hypot(du, dv);
     if (chord == 0)
-      throw InputError(where,
-                       "an R arc needs distinct start and end; use I/J/K for a full circle");
+      throw InputError(where, "an R arc needs distinct start and end; use I/J/K for a full circle");
     if (chord > 2 * std::fabs(arc.radius) + kArcRadiusSlack)
       throw InputError(where, fmt::format("arc radius R = {:g} mm is smaller than half the "
                                           "chord ({:g} mm)",

@@ -20,8 +20,8 @@ namespace scallop {
 constexpr double kArcRadiusSlack = 0.002;
 
 struct ArcSpec {
-  Vec3 start, end;  // mm
-  int plane = 17;   // 17, 18 or 19
+  Vec3 start, end;   // mm
+  int plane = 17;    // 17, 18 or 19
   bool ccw = false;  // G3
   bool hasRadius = false;
   double radius = 0;  // mm, when hasRadius

@@ -47,8 +47,9 @@ GcodeBlock lexGcodeBlock(const std::string& line, const std::string& where, bool
     } else if (c == ';') {
       break;
     } else if (c == '#') {
-      throw InputError(where, "parameters (\"#\" variables) are not supported: scallop reads "
-                              "G-code with plain numbers, as CAM posts write it");
+      throw InputError(where,
+                       "parameters (\"#\" variables) are not supported: scallop reads "
+                       "G-code with plain numbers, as CAM posts write it");
     } else if (c == '[') {
       throw InputError(where, "expressions (\"[...]\") are not supported");
     } else if (c != ' ' && c != '\t' && c != '\r') {
@@ -94,9 +95,25 @@ GcodeBlock lexGcodeBlock(const std::string& line, const std::string& where, bool
       case 'M':
         block.m.push_back(v);
         break;
-      case 'X': case 'Y': case 'Z': case 'A': case 'B': case 'C': case 'I': case 'J':
-      case 'K': case 'R': case 'F': case 'S': case 'N': case 'T': case 'P': case 'Q':
-      case 'L': case 'H': case 'D':
+      case 'X':
+      case 'Y':
+      case 'Z':
+      case 'A':
+      case 'B':
+      case 'C':
+      case 'I':
+      case 'J':
+      case 'K':
+      case 'R':
+      case 'F':
+      case 'S':
+      case 'N':
+      case 'T':
+      case 'P':
+      case 'Q':
+      case 'L':
+      case 'H':
+      case 'D':
         if (block.given(letter))
           throw InputError(where, fmt::format("word {} appears twice in one line", letter));
         block.has[size_t(letter - 'A')] = true;

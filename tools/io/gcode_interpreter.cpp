@@ -10,6 +10,7 @@
 #include "sweep/pose_curve.h"
 #include "tools/io/gcode_arc.h"
 #include "tools/io/gcode_cycles.h"
+#include "tools/io/gcode_groups.h"
 
 namespace scallop {
 
@@ -26,19 +27,7 @@ std::string codeText(char letter, int tenths) {
   return gcodeWordText(letter, tenths / 10.0);
 }
 
-bool listed(const std::vector<std::string>& codes, const std::string& word) {
-  return std::find(codes.begin(), codes.end(), word) != codes.end();
-}
-
 }  // namespace
-
-// The words of one block by modal group, in tenths (-1: none in the block).
-struct GcodeInterpreter::Groups {
-  int motion = -1, plane = -1, units = -1, distance = -1, arcDistance = -1, feed = -1;
-  int compensation = -1, length = -1, offset = -1, pathMode = -1, retract = -1, nonModal = -1;
-  int tcp = -1;  // 1: a tcp_on code, 0: a tcp_off code
-  bool end = false, change = false;
-};
 
 GcodeInterpreter::GcodeInterpreter(const std::string& source, const PathFileOptions& options,
                                    ToolPathFile& out)
@@ -48,100 +37,6 @@ GcodeInterpreter::GcodeInterpreter(const std::string& source, const PathFileOpti
 
 void GcodeInterpreter::ignore(const std::string& word, const std::string& meaning) {
   out_.ignored.add(word, meaning, line_);
-}
-
-// --- G and M words into their groups. ---------------------------------------------
-
-void GcodeInterpreter::classifyG(const GcodeBlock& b, Groups& g) {
-  auto set = [&](int& slot, int code, const char* group) {
-    if (slot != -1)
-      throw InputError(where_, fmt::format("two {} words ({} and {}) in one line", group,
-                                           codeText('G', slot), codeText('G', code)));
-    slot = code;
-  };
-  for (double v : b.g) {
-    const std::string text = gcodeWordText('G', v);
-    if (options_.machine && listed(options_.machine->tcpOn, text)) {
-      set(g.tcp, 1, "TCP");
-      continue;
-    }
-    if (options_.machine && listed(options_.machine->tcpOff, text)) {
-      set(g.tcp, 0, "TCP");
-      continue;
-    }
-    const int c = gcodeTenths(v);
-    if (c < 0) throw InputError(where_, fmt::format("unsupported G-word G{:g}", v));
-    if (c == 0 || c == 10 || c == 20 || c == 30 || c == 730 || c == 800 ||
-        (c >= 810 && c <= 890 && c % 10 == 0 && c != 870)) {
-      set(g.motion, c, "motion");
-    } else if (c == 870) {
-      throw InputError(where_, "G87 (back boring) is not supported: it cuts from below, which "
-                               "a height map seen from above cannot show");
-    } else if (c == 40 || c == 280 || c == 300 || c == 530) {
-      set(g.nonModal, c, "non-modal");
-    } else if (c == 170 || c == 180 || c == 190) {
-      set(g.plane, c, "plane");
-    } else if (c == 200 || c == 210) {
-      set(g.units, c, "unit");
-    } else if (c == 400) {
-      set(g.compensation, c, "cutter compensation");
-    } else if (c == 410 || c == 420) {
-      throw InputError(where_, fmt::format("{} (cutter radius compensation) is not supported: "
-                                           "scallop sweeps the programmed tool centre; post the "
-                                           "path with compensation done in the CAM system",
-                                           text));
-    } else if (c == 430 || c == 434 || c == 490) {
-      set(g.length, c, "tool length");
-    } else if (c >= 540 && c <= 590 && c % 10 == 0) {
-      set(g.offset, c, "work offset");
-    } else if (c == 610 || c == 611 || c == 640) {
-      set(g.pathMode, c, "path control");
-    } else if (c == 900 || c == 910) {
-      set(g.distance, c, "distance-mode");
-    } else if (c == 901 || c == 911) {
-      set(g.arcDistance, c, "arc distance-mode");
-    } else if (c == 930 || c == 940 || c == 950) {
-      set(g.feed, c, "feed-mode");
-    } else if (c == 980 || c == 990) {
-      set(g.retract, c, "retract-mode");
-    } else if (c == 100 || c == 520 || c == 920 || c == 921 || c == 922 || c == 923) {
-      throw InputError(where_, fmt::format("{} (setting a coordinate system) is not supported; "
-                                           "give the work offsets G54-G59 in the job "
-                                           "(\"work_offsets\")",
-                                           text));
-    } else {
-      throw InputError(where_, "unsupported G-word " + text);
-    }
-  }
-}
-
-void GcodeInterpreter::runM(const GcodeBlock& b, Groups& g) {
-  for (double v : b.m) {
-    const std::string text = gcodeWordText('M', v);
-    if (options_.machine && listed(options_.machine->tcpOn, text)) {
-      g.tcp = 1;
-      continue;
-    }
-    if (options_.machine && listed(options_.machine->tcpOff, text)) {
-      g.tcp = 0;
-      continue;
-    }
-    const int c = gcodeTenths(v);
-    if (c < 0 || c % 10 != 0) throw InputError(where_, fmt::format("unsupported M-word M{:g}", v));
-    switch (c / 10) {
-      case 0: case 1: ignore(text, "program stop"); break;
-      case 2: case 30: g.end = true; break;
-      case 3: case 4: case 5: ignore(text, "spindle"); break;
-      case 6: g.change = true; break;
-      case 7: case 8: case 9: ignore(text, "coolant"); break;
-      case 98: case 99:
-        throw InputError(where_, text + " (subprogram call/return) is not supported: post the "
-                                        "program without subprograms");
-      default:
-        out_.warnings.add(where_, "M-code " + text + " ignored (machine-specific; nothing "
-                                  "scallop simulates)");
-    }
-  }
 }
 
 // --- Tools. ---------------------------------------------------------------------
@@ -157,8 +52,10 @@ void GcodeInterpreter::selectTool(const GcodeBlock& b, bool change) {
       ignore("T", "tool select: the job has one \"tool\", which cuts every move");
     } else if (n != 0 && !tools.count(n)) {
       std::string have;
-      for (const auto& [number, cutter] : tools) have += (have.empty() ? "" : ", ") + std::to_string(number);
-      throw InputError(where_, fmt::format("T{} is not in the job's \"tools\" (it has {})", n, have));
+      for (const auto& [number, cutter] : tools)
+        have += (have.empty() ? "" : ", ") + std::to_string(number);
+      throw InputError(where_,
+                       fmt::format("T{} is not in the job's \"tools\" (it has {})", n, have));
     }
     selected_ = n;
   }
@@ -197,22 +94,24 @@ bool GcodeInterpreter::block(const GcodeBlock& b, int64_t line) {
   line_ = line;
   if (b.kind == GcodeBlock::Kind::Percent) return ++percentLines_ < 2;  // the closing '%'
   if (b.kind == GcodeBlock::Kind::Empty) return true;
-  Groups g;
-  classifyG(b, g);
+  GcodeGroups g = groupGcodeWords(b, options_.machine ? &*options_.machine : nullptr, where_);
+  for (const auto& [word, meaning] : g.ignored) ignore(word, meaning);
+  for (const std::string& word : g.unknownM)
+    out_.warnings.add(where_,
+                      "M-code " + word + " ignored (machine-specific; nothing scallop simulates)");
   // In LinuxCNC's order of execution: feed, speed, tool, M words, modes, then motion.
   if (b.given('F')) ignore("F", "feed rate (G93/G94/G95 feeds change no geometry)");
   if (b.given('S')) ignore("S", "spindle speed");
-  runM(b, g);
   selectTool(b, g.change);
   if (g.plane != -1) plane_ = g.plane / 10;
   if (g.units != -1) {
     const double scale = g.units == 200 ? 25.4 : 1.0;
     if (scale != scale_ && firstMoveLine_ != 0)
-      throw InputError(where_, fmt::format("mixed units: {} after moves in {} since line {}; a "
-                                           "file must use one unit",
-                                           codeText('G', g.units),
-                                           scale_ == 1 ? "mm (G21)" : "inches (G20)",
-                                           firstMoveLine_));
+      throw InputError(
+          where_, fmt::format("mixed units: {} after moves in {} since line {}; a "
+                              "file must use one unit",
+                              codeText('G', g.units), scale_ == 1 ? "mm (G21)" : "inches (G20)",
+                              firstMoveLine_));
     scale_ = scale;
   }
   if (g.compensation != -1) ignore("G40", "cutter compensation off (the default)");
@@ -271,13 +170,14 @@ GcodeInterpreter::State GcodeInterpreter::target(const GcodeBlock& b, bool machi
       c = v + component(offset, a);
     } else {
       if (!known_[size_t(a)])
-        throw InputError(where_, fmt::format("incremental {} (G91) from an unknown position", letter));
+        throw InputError(where_,
+                         fmt::format("incremental {} (G91) from an unknown position", letter));
       c += v;
     }
     known[size_t(a)] = true;
   }
-  const bool bc = options_.machine &&
-                  options_.machine->geometry.kinematics == RotaryKinematics::TableBC;
+  const bool bc =
+      options_.machine && options_.machine->geometry.kinematics == RotaryKinematics::TableBC;
   const char tiltLetter = bc ? 'B' : 'A';
   for (char letter : {'A', 'B', 'C'}) {
     if (!b.given(letter)) continue;
@@ -292,8 +192,7 @@ GcodeInterpreter::State GcodeInterpreter::target(const GcodeBlock& b, bool machi
     double& angle = letter == 'C' ? t.spin : t.tilt;
     angle = absolute_ || machineFrame ? radians : angle + radians;
   }
-  if (options_.machine &&
-      machineAxis(options_.machine->geometry.kinematics, t.tilt, t.spin).z < 0)
+  if (options_.machine && machineAxis(options_.machine->geometry.kinematics, t.tilt, t.spin).z < 0)
     throw InputError(where_, fmt::format("the tilt {:g} deg points the tool below the horizontal: "
                                          "a height map seen from above cannot show what it cuts",
                                          t.tilt * 180 / kPi));
@@ -314,17 +213,18 @@ void GcodeInterpreter::moveTo(const State& to, bool rapid) {
   Move& mv = out_.path.moves.back();
   mv.tool = uint16_t(rapid ? std::max(spindle_, 0) : toolIndex());
   if (!rapid && turns) {
-    out_.path.rotary.push_back({state_.tilt, to.tilt, state_.spin, to.spin, tcp_, state_.pos, to.pos});
+    out_.path.rotary.push_back(
+        {state_.tilt, to.tilt, state_.spin, to.spin, tcp_, state_.pos, to.pos});
     mv.rotary = uint32_t(out_.path.rotary.size());
   }
   if (firstMoveLine_ == 0) firstMoveLine_ = line_;
   state_ = to;
 }
 
-void GcodeInterpreter::motion(const GcodeBlock& b, const Groups& g) {
+void GcodeInterpreter::motion(const GcodeBlock& b, const GcodeGroups& g) {
   const bool machineFrame = g.nonModal == 530;
-  const bool axes = b.given('X') || b.given('Y') || b.given('Z') || b.given('A') ||
-                    b.given('B') || b.given('C');
+  const bool axes =
+      b.given('X') || b.given('Y') || b.given('Z') || b.given('A') || b.given('B') || b.given('C');
   if (g.motion == 800) {
     motion_ = -1;
     if (axes) throw InputError(where_, "axis words with G80 (cancel the cycle)");
@@ -358,8 +258,9 @@ void GcodeInterpreter::motion(const GcodeBlock& b, const Groups& g) {
       state_ = to;
   } else {
     if (!startKnown)
-      throw InputError(where_, "cutting move from an unknown position: give X, Y and Z first "
-                               "(e.g. in a G0)");
+      throw InputError(where_,
+                       "cutting move from an unknown position: give X, Y and Z first "
+                       "(e.g. in a G0)");
     if (motion_ == 10)
       moveTo(to, false);
     else
@@ -388,10 +289,11 @@ void GcodeInterpreter::home(const GcodeBlock& b, int code) {
     axes += "XYZ"[a];
   }
   known_ = knownAfter;
-  out_.warnings.add(where_, fmt::format("{} (return home): followed as a rapid to the "
-                                        "intermediate point; home is the machine's own "
-                                        "position, so {} {} unknown until a move gives them",
-                                        codeText('G', code), axes, axes.size() == 1 ? "stays" : "stay"));
+  out_.warnings.add(where_,
+                    fmt::format("{} (return home): followed as a rapid to the "
+                                "intermediate point; home is the machine's own "
+                                "position, so {} {} unknown until a move gives them",
+                                codeText('G', code), axes, axes.size() == 1 ? "stays" : "stay"));
 }
 
 void GcodeInterpreter::arc(const GcodeBlock& b, const State& to) {
@@ -414,8 +316,8 @@ void GcodeInterpreter::arc(const GcodeBlock& b, const State& to) {
     a.radius = b.at('R') * scale_;
   } else if (arcAbsolute_) {
     if (!b.given(offU) || !b.given(offV))
-      throw InputError(where_, fmt::format("arc (G90.1, absolute centre) needs both {} and {}",
-                                           offU, offV));
+      throw InputError(
+          where_, fmt::format("arc (G90.1, absolute centre) needs both {} and {}", offU, offV));
     const Vec3& offset = options_.workOffsets[size_t(workOffset_)];
     a.centreU = b.at(offU) * scale_ + component(offset, iu);
     a.centreV = b.at(offV) * scale_ + component(offset, iv);
@@ -435,8 +337,7 @@ void GcodeInterpreter::arc(const GcodeBlock& b, const State& to) {
 void GcodeInterpreter::cycle(const GcodeBlock& b) {
   const std::string name = codeText('G', motion_);
   if (plane_ != 17) throw InputError(where_, name + ": drilling cycles are read in G17 only");
-  if (b.given('A') || b.given('B') || b.given('C') || b.given('I') || b.given('J') ||
-      b.given('K'))
+  if (b.given('A') || b.given('B') || b.given('C') || b.given('I') || b.given('J') || b.given('K'))
     throw InputError(where_, name + ": a drilling cycle takes X Y Z R Q P L F, not A B C I J K");
   if (!(known_[0] && known_[1] && known_[2]))
     throw InputError(where_, name + " from an unknown position: give X, Y and Z first");
@@ -477,8 +378,9 @@ void GcodeInterpreter::cycle(const GcodeBlock& b) {
       if (b.given('X')) x += b.at('X') * scale_;
       if (b.given('Y')) y += b.at('Y') * scale_;
     }
-    drillHole(c, state_.pos, x, y,
-              [&](const Vec3& p, bool rapid) { moveTo({p, state_.tilt, state_.spin}, rapid); });
+    drillHole(c, state_.pos, x, y, [&](const Vec3& p, bool rapid) {
+      moveTo({p, state_.tilt, state_.spin}, rapid);
+    });
   }
 }
 

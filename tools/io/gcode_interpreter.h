@@ -8,6 +8,7 @@
 #include <string>
 
 #include "tools/io/gcode_block.h"
+#include "tools/io/gcode_groups.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
@@ -29,13 +30,9 @@ class GcodeInterpreter {
     Vec3 pos;
     double tilt = 0, spin = 0;
   };
-  struct Groups;
-
-  void classifyG(const GcodeBlock& b, Groups& g);
-  void runM(const GcodeBlock& b, Groups& g);
   void selectTool(const GcodeBlock& b, bool change);
   State target(const GcodeBlock& b, bool machineFrame, std::array<bool, 3>& known) const;
-  void motion(const GcodeBlock& b, const Groups& g);
+  void motion(const GcodeBlock& b, const GcodeGroups& g);
   void home(const GcodeBlock& b, int code);
   void arc(const GcodeBlock& b, const State& to);
   void cycle(const GcodeBlock& b);

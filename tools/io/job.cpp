@@ -304,8 +304,9 @@ Job parseJob(const std::string& textIn, const std::string& source,
       throw InputError("sweep.axis_tolerance",
                        "is no longer used: moves whose axis turns are swept exactly, with no "
                        "tolerance; remove \"sweep\" from the job");
-    rejectUnknownKeys(doc, {"tool", "tools", "stock", "grid", "path", "design", "work_offsets",
-                            "block_delete", "machine"},
+    rejectUnknownKeys(doc,
+                      {"tool", "tools", "stock", "grid", "path", "design", "work_offsets",
+                       "block_delete", "machine"},
                       "");
     Job job;
     job.source = source;
@@ -313,8 +314,7 @@ Job parseJob(const std::string& textIn, const std::string& source,
     job.hasTool = doc.contains("tool");
     if (job.hasTool) job.cutter = parseTool(requireObject(doc, "tool", "tool"));
     if (doc.contains("tools")) {
-      if (job.hasTool)
-        throw InputError("tools", "a job has \"tool\" or \"tools\", not both");
+      if (job.hasTool) throw InputError("tools", "a job has \"tool\" or \"tools\", not both");
       job.tools = parseTools(requireObject(doc, "tools", "tools"));
       // The largest cutter stands for all in summaries and estimates (job.h).
       job.cutter = job.tools.begin()->second;
@@ -325,7 +325,8 @@ Job parseJob(const std::string& textIn, const std::string& source,
     if (doc.contains("work_offsets"))
       job.workOffsets = parseWorkOffsets(requireObject(doc, "work_offsets", "work_offsets"));
     job.blockDelete = boolean(doc, "block_delete", "block_delete", false);
-    if (doc.contains("machine")) job.machine = parseMachine(requireObject(doc, "machine", "machine"));
+    if (doc.contains("machine"))
+      job.machine = parseMachine(requireObject(doc, "machine", "machine"));
     namespace fs = std::filesystem;
     auto besideJob = [&](const std::string& file) {
       fs::path p(file);
@@ -417,7 +418,8 @@ json jobToJson(const Job& job) {
     out["tool"] = cutterToJson(job.cutter);
   } else {
     json tools = json::object();
-    for (const auto& [number, cutter] : job.tools) tools[std::to_string(number)] = cutterToJson(cutter);
+    for (const auto& [number, cutter] : job.tools)
+      tools[std::to_string(number)] = cutterToJson(cutter);
     out["tools"] = tools;
   }
   if (job.design)

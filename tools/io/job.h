@@ -24,7 +24,7 @@ namespace scallop {
 class InputError;
 
 struct Job {
-  std::string source;  // file name, or "built-in default job"
+  std::string source;    // file name, or "built-in default job"
   bool hasTool = false;  // "tool" was given; otherwise the path file's CUTTER/ is the tool
   // The one cutter, or with "tools" (or an APT file of several CUTTER/s) the one of
   // largest radius: what single-cutter summaries and memory estimates use (they err
@@ -39,7 +39,7 @@ struct Job {
   // "machine": a 5-axis machine for G-code rotary words (CONVENTIONS.md "Machines").
   std::optional<MachineSpec> machine;
   Box3 stock;
-  double spacing = 0;           // grid cell side, mm
+  double spacing = 0;  // grid cell side, mm
   bool isRaster = false;
   RasterSpec raster;     // when isRaster
   std::string pathFile;  // when not: the tool-path file, resolved to a path

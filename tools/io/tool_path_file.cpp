@@ -24,8 +24,8 @@ void PathWarnings::add(const std::string& where, const std::string& what) {
 }
 
 void IgnoredWords::add(const std::string& word, const std::string& meaning, int64_t line) {
-  auto it = std::find_if(entries.begin(), entries.end(),
-                         [&](const Entry& e) { return e.word == word; });
+  auto it =
+      std::find_if(entries.begin(), entries.end(), [&](const Entry& e) { return e.word == word; });
   if (it == entries.end()) it = entries.insert(entries.end(), Entry{word, meaning, 0, {}});
   ++it->count;
   if (it->lines.size() < kMaxLines && (it->lines.empty() || it->lines.back() != line))

@@ -21,8 +21,10 @@ void readPathFile(Job& job) {
   ToolPathFile read = readToolPathFile(job.pathFile, job.pathOptions());
   const bool multiTool = !read.path.cutters.empty();
   if (!job.hasTool && job.tools.empty() && !read.cutter)
-    throw InputError("tool", "missing; expected an object, or \"tools\" (or a CUTTER/ "
-                             "statement in " + job.pathFile + ")");
+    throw InputError("tool",
+                     "missing; expected an object, or \"tools\" (or a CUTTER/ "
+                     "statement in " +
+                         job.pathFile + ")");
   if (!job.hasTool && job.tools.empty()) job.cutter = *read.cutter;
   if (!job.hasTool && multiTool) {
     // Summaries and estimates take the largest of the cutters used (job.h).

@@ -31,7 +31,8 @@ json pathFileReport(const Job& job, bool quiet) {
   const std::vector<Cutter>& cutters = job.path.cutters;
   if (!cutters.empty()) {
     // The tools of a multi-tool program, each with the cutting moves it makes.
-    std::vector<int64_t> moves(cutters.size(), 0), first(cutters.size(), 0), last(cutters.size(), 0);
+    std::vector<int64_t> moves(cutters.size(), 0), first(cutters.size(), 0),
+        last(cutters.size(), 0);
     for (size_t k = 0; k < job.path.moves.size(); ++k) {
       const Move& m = job.path.moves[k];
       if (m.rapid || m.tool >= cutters.size()) continue;
@@ -62,8 +63,7 @@ json pathFileReport(const Job& job, bool quiet) {
   return r;
 }
 
-json designReport(const Job& job, const ZMap& map,
-                  const std::string& outDir, bool quiet) {
+json designReport(const Job& job, const ZMap& map, const std::string& outDir, bool quiet) {
   const MeshIndex index(*job.design);
   DesignComparison c = compareWithDesign(map, index, job.gougeTolerance);
   attributeGouges(c, map, job.cutter, job.path);
