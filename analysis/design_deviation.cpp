@@ -96,7 +96,8 @@ struct MoveFinder::Impl {
   }
 };
 
-MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path, const std::vector<Box3>& areas)
+MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path,
+                       const std::vector<Box3>& areas)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.moveToSlot.assign(path.moves.size(), -1);
