@@ -53,14 +53,28 @@
 //      is returned, or at least the caller's cutoff (a miss). Bounds near the minimum
 //      meet f quadratically and f rises quadratically away from it, so intervals
 //      growing geometrically from the minimum are proven: 3 to 15 samples typically.
-//   The search's order depends on (x, y) alone (the cutoff only stops it), so the
-//   height returned is the same whatever was evaluated before, on any thread.
+//   4. Ray clearance (ray_clearance.cpp): seen from the cutter, the point Q = (x, y, z)
+//      moves along a curve within omega^2 D + 2 omega |p1 - p0| (times tau^2 / 2) of its
+//      tangent line, and the distance from that line to the cutter's convex core is
+//      convex in t, so a ladder of tangent lines proves the downward ray from Q misses
+//      every K(t) in a few closed-form distances, without any stationary search.
+//   4a. Before anything is sampled, with z = the cutoff: a move that provably stays
+//      above it is a miss (on B3, 45 % of the moves a cell asks about).
+//   4b. Once the best sample's slope is small (|f'| <= 1e-6) or nothing brackets a
+//      minimum, with z = U - 1e-9 and the best sample as the anchor: the whole move is
+//      proven at once, in place of step 3's ladder of intervals (B3: 99.99 % of the
+//      searches that reach it). Where it fails, step 3 goes on as before.
+//   The search's order depends on (x, y) alone (the cutoff only stops it, and step 4a
+//   only returns a miss), so the height returned is the same whatever was evaluated
+//   before, on any thread.
 #include "sweep/swept_move.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
+
+#include "sweep/ray_clearance.h"
 
 namespace scallop {
 
@@ -69,6 +83,9 @@ namespace {
 constexpr double kProofGap = 1e-9;   // mm: proven lower bound and height returned meet
 constexpr int kMaxSamples = 256;     // a guard: typical searches take 3 to 40
 constexpr double kFlatSlope = 1e-8;  // mm per unit t: a sample at a minimum of f
+// mm per unit t: a sample near enough to a minimum of f for step 4b to be worth trying
+// (within s^2 / (2 f'') = 2e-10 mm of F for the f'' ~ 2.5e-3 mm of B3's moves).
+constexpr double kClearanceSlope = 1e-6;
 
 // f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
 // (No member initialisers: a search keeps its samples in an uninitialised array.)
@@ -195,6 +212,9 @@ LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double
 
 LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) const {
   const Cutter& c = cutter_;
+  // Step 4a: a move the ray-clearance proof puts above the cutoff is a miss, found
+  // without a single stationary search (ray_clearance.h).
+  if (cutoff < HUGE_VAL && rayClearsMove(c, curve_, {x, y, cutoff}, 0.5, 0, 1)) return {};
   const double omega = curve_.turnRate();
   const Vec3 delta = curve_.tipEnd() - curve_.tipStart();
 
@@ -348,6 +368,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   auto bracketsMinimum = [&](const Interval& iv) {
     return samples[iv.a].slope < 0 && samples[iv.b].slope > 0;
   };
+  int clearanceFrom = -1, clearanceTries = 0;  // step 4b: the last sample it started from
   while (openCount > 0 && count < kMaxSamples) {
     // Until the best sample is a minimum of f to round-off (f' ~ 0, where step 2d proves
     // the intervals beside it at once), an interval whose ends bracket a root of f' is
@@ -361,6 +382,19 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
           p.lower < open[k].lower ||
           (p.lower == open[k].lower && samples[p.a].t < samples[open[k].a].t))
         k = i;
+    }
+    // Step 4b: once the minimum is nearly located (the best sample's slope small enough
+    // for U to lie within the gap of F where f curves as on CAM paths, or no interval
+    // left that brackets a minimum), the ray-clearance proof from the best sample may
+    // settle the whole move at once: every f(t) > U - 1e-9. Tried from a new best
+    // sample at most three times.
+    if (best != clearanceFrom && clearanceTries < 3 && U < HUGE_VAL &&
+        (std::fabs(samples[best].slope) <= kClearanceSlope || !bracketsMinimum(open[k]))) {
+      clearanceFrom = best, ++clearanceTries;
+      if (rayClearsMove(c, curve_, {x, y, U - kProofGap}, samples[best].t, 0, 1)) {
+        openCount = 0;
+        break;
+      }
     }
     Interval iv = open[k];
     if (iv.U > U) {  // bounded before U fell: bound it again, and pick anew

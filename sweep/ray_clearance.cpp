@@ -1,0 +1,126 @@
+// The ray-clearance proof for a move whose axis turns.
+//
+// Notation as in swept_move.cpp: pose(t) from a PoseCurve, tip(t) = p0 + t Delta, the
+// cutter turned rigidly by R(t) about its tip, |Omega| <= omega. Every cutter is
+//     K = ( C (+) Ball(r) ) n { s <= L },   C = Cyl(Rb; s in [r, L])        (cutter.h)
+// so K lies in K' = C (+) Ball(r), and a point p lies outside K' iff dist(p, C) > r.
+// dist(., C) is the distance to a convex set: convex and 1-Lipschitz, with the closed
+// form dist = hypot(max(0, rho - Rb), max(0, r - s, s - L)) in the cutter's frame
+// (s along the axis, rho across it).
+//
+//   1. The cutter's frame at the anchor ts. Seen from the cutter, Q moves along
+//          gamma(t) = R(ts) R(t)^-1 (Q - tip(t)),   gamma(ts) = Q - tip(ts),
+//          gamma'(ts) = -Delta - Omega(ts) x (Q - tip(ts)),
+//      and world up is d(t) = R(ts) R(t)^-1 z, d(ts) = z. The curve's rates bound R^-1
+//      as they bound R (both kinds are products of rotations at constant rates about
+//      fixed axes; so are their inverses): |gamma'| <= V = |Delta| + omega D and
+//      |gamma''| <= E = omega^2 D + 2 omega |Delta|, D >= |Q - tip(t)| on [t0, t1],
+//      |d'| <= omega. So gamma stays within E tau^2 / 2 of its tangent line
+//      ell(tau) = gamma(ts) + tau gamma'(ts), tau = t - ts (Taylor, integral form).
+//   2. Outside. h(tau) = dist(ell(tau), C) is convex in tau (a convex function along a
+//      line), so h lies above its tangent at any tau_k. With the 1-Lipschitz distance,
+//          dist(gamma(t), C) >= h(tau) - E tau^2 / 2
+//                            >= h(tau_k) + h'(tau_k)(tau - tau_k) - E tau^2 / 2,
+//      a concave function of tau: where it exceeds r at both ends of a rung
+//      [tau_k, tau_k+1], every gamma(t) of the rung lies outside K'. Rungs are as long as
+//      that allows (the root of a quadratic), starting at the anchor and walking out to
+//      t0 and to t1; each costs one closed-form distance and its derivative.
+//   3. Below. Outside is not enough: the line could pass through K(t) entirely below
+//      Q. Let c be the point of C nearest gamma, n the unit vector from c to gamma.
+//      C lies in n.(p - c) <= 0, so K' lies in n.(p - c) <= r, while the downward ray
+//      gamma - lambda d has n.(gamma - lambda d - c) = dist - lambda n.d > r for all
+//      lambda >= 0 when n.d <= 0. The unit vector from a convex set's nearest point is
+//      (1/m)-Lipschitz among points at distance >= m (here m = r, by step 2), so over
+//      the whole range n.d <= n0.z + (2 V / r + omega) |tau| (a factor 2 to spare),
+//      checked once. Then the ray misses K'(t), hence K(t): f(t) > Q.z.
+// A flat cutter (r = 0) has no such m near its rim, so it is never cleared here.
+// Round-off: every inequality keeps a slack of 1e-12 (1 + D + L) mm, far below the
+// 1e-9 mm proof gap the callers leave.
+#include "sweep/ray_clearance.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace scallop {
+
+namespace {
+
+constexpr int kMaxRungs = 48;  // per side; typical: 1 (a cutoff) to 8 (at the minimum)
+
+// dist(p, C) and its gradient (the unit vector from the nearest point of C), in the
+// cutter's frame: tip at the origin, unit axis a. p must lie outside C (dist > 0).
+struct CoreDistance {
+  double rb, r, L;
+  Vec3 a;
+  double at(const Vec3& p, Vec3* gradient) const {
+    const double s = dot(p, a);
+    const Vec3 perp = p - a * s;
+    const double rho = length(perp);
+    const double dx = std::max(0.0, rho - rb);
+    double ds = 0, sign = 0;
+    if (s < r) ds = r - s, sign = -1;
+    if (s > L) ds = s - L, sign = 1;
+    const double dist = std::sqrt(dx * dx + ds * ds);
+    if (gradient && dist > 0) {
+      const double radial = rho > rb ? dx / rho : 0;
+      *gradient = (perp * radial + a * (sign * ds)) / dist;
+    }
+    return dist;
+  }
+};
+
+// Step 2 along one side: the tangent line ell(tau) = p + tau v, tau in [0, T], proven
+// outside K' (dist(gamma, C) > r) rung by rung.
+bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T, double E,
+                double slack) {
+  if (!(T > 0)) return true;
+  const double need = core.r + slack;  // dist(gamma, C) must exceed this
+  double u = 0;
+  for (int rung = 0; rung < kMaxRungs; ++rung) {
+    Vec3 grad;
+    const double hu = core.at(p + v * u, &grad);
+    const double g = dot(grad, v);
+    if (!(hu - 0.5 * E * u * u > need)) return false;
+    // The rung's far end: where hu + g (tau - u) - E tau^2 / 2 falls to `need`.
+    const double c0 = hu - g * u - need;
+    double far;
+    if (E > 0) {
+      far = (g + std::sqrt(g * g + 2 * E * c0)) / E;
+    } else {
+      far = g >= 0 ? HUGE_VAL : u + (hu - need) / -g;
+    }
+    const double next = std::min(T, u + 0.95 * (far - u));
+    if (!(hu + g * (next - u) - 0.5 * E * next * next > need)) return false;
+    if (next >= T) return true;
+    if (!(next - u > 1e-12)) return false;
+    u = next;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor, double t0,
+                   double t1) {
+  if (!(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
+  const Vec3 tip = curve.tip(anchor), axis = curve.axis(anchor);
+  const Vec3 delta = curve.tipEnd() - curve.tipStart();
+  const double omega = curve.turnRate(), move = length(delta);
+  const Vec3 g0 = q - tip;
+  const Vec3 g1 = -delta - cross(curve.spin(anchor), g0);  // gamma'(anchor)
+  const double left = anchor - t0, right = t1 - anchor, reach = std::max(left, right);
+  const double D = length(g0) + move * reach;
+  const double V = move + omega * D;
+  const double E = (omega * omega * D + 2 * omega * move) * (1 + 1e-12);
+  const CoreDistance core{c.bottomRadius(), c.cornerRadius, c.fluteLength, axis};
+  const double slack = 1e-12 * (1 + D + c.fluteLength);
+
+  // Step 3 first (cheap, and it needs dist > 0 at the anchor anyway).
+  Vec3 n0;
+  if (!(core.at(g0, &n0) > core.r + slack)) return false;
+  if (!(n0.z + (2 * V / core.r + omega) * reach < 0)) return false;
+  // Step 2 on both sides of the anchor.
+  return sideClears(core, g0, g1, right, E, slack) && sideClears(core, g0, -g1, left, E, slack);
+}
+
+}  // namespace scallop
