@@ -98,6 +98,41 @@ bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T
   return false;
 }
 
+// Step 2 with curvature, both sides at once: where the nearest point of C to ell stays
+// the rim (rho > Rb and s < r along the whole range), h = hypot(rho - Rb, r - s) and
+//     h'' = (rho'^2 + s'^2 - h'^2 + (rho - Rb) rho'') / h >= (w x g)^2 / h,
+// w = (rho', -s') and g the unit vector from the rim to ell in the (rho, s) plane
+// (rho'' >= 0: rho is convex along a line). Over |tau| <= T, w moves by at most
+// T |v_perp|^2 / rho_min (|rho''| <= |v_perp|^2 / rho, s'' = 0) and g by T |v| / h_min
+// (|w| <= |v|), which bounds w x g below by c; then h'' >= m = c^2 / h_max and
+//     h(tau) - E tau^2 / 2 >= h(0) + h'(0) tau + (m - E) tau^2 / 2,
+// a parabola whose minimum over [-left, right] is closed form. Near a minimum of f
+// (h'(0) ~ 0, h(0) - r ~ 1e-9 mm) this proves in one evaluation what the rungs need
+// ~10 for (their tangents only halve their distance to the minimum).
+bool curvatureClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double left,
+                     double right, double E, double slack) {
+  const double T = std::max(left, right);
+  const double s = dot(p, core.a), sv = dot(v, core.a);
+  const Vec3 perp = p - core.a * s, vPerp = v - core.a * sv;
+  const double rho = length(perp), vp = length(vPerp), speed = length(v);
+  const double X = rho - core.rb, sigma = core.r - s;
+  // The rim regime over the whole range, and h bounded away from 0.
+  if (!(X > vp * T && sigma > std::fabs(sv) * T && rho > vp * T)) return false;
+  const double h0 = std::sqrt(X * X + sigma * sigma);
+  const double hMin = h0 - speed * T, hMax = h0 + speed * T;
+  if (!(hMin > 0)) return false;
+  const double rhoDot = dot(perp, vPerp) / rho;
+  const double h1 = (X * rhoDot - sigma * sv) / h0;  // h'(0)
+  const double c0 = std::fabs(rhoDot * sigma - (-sv) * X) / h0;
+  const double drift = T * vp * vp / (rho - vp * T) + speed * T * speed / hMin;
+  const double c = std::max(0.0, c0 - drift);
+  const double m = c * c / hMax;
+  if (!(m > E)) return false;
+  const double k = m - E;
+  const double tau = std::clamp(-h1 / k, -left, right);
+  return h0 + h1 * tau + 0.5 * k * tau * tau > core.r + slack * (1 + h0);
+}
+
 }  // namespace
 
 bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor, double t0,
@@ -119,7 +154,8 @@ bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, doubl
   Vec3 n0;
   if (!(core.at(g0, &n0) > core.r + slack)) return false;
   if (!(n0.z + (2 * V / core.r + omega) * reach < 0)) return false;
-  // Step 2 on both sides of the anchor.
+  // Step 2: the curvature bound in one go where it applies, else rungs on both sides.
+  if (curvatureClears(core, g0, g1, left, right, E, slack)) return true;
   return sideClears(core, g0, g1, right, E, slack) && sideClears(core, g0, -g1, left, E, slack);
 }
 

@@ -86,6 +86,7 @@ constexpr double kFlatSlope = 1e-8;  // mm per unit t: a sample at a minimum of 
 // mm per unit t: a sample near enough to a minimum of f for step 4b to be worth trying
 // (within s^2 / (2 f'') = 2e-10 mm of F for the f'' ~ 2.5e-3 mm of B3's moves).
 constexpr double kClearanceSlope = 1e-6;
+constexpr int kLocateSteps = 8;  // step 5's secant steps (B3: 1 to 3)
 
 // f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
 // (No member initialisers: a search keeps its samples in an uninitialised array.)
@@ -243,8 +244,15 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     } else {
       s.normal = steepNormal(c, s.tip, s.axis, x, y);
     }
-    s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c, s.axis, s.normal)) : 0;
+    s.hOwn = std::numeric_limits<double>::quiet_NaN();  // supportOf(), when a bound needs it
     return count++;
+  };
+  // The support of K(t) - tip(t) in the sample's plane normal, which every bound of
+  // step 2 needs and step 5 does not: computed once, on first use.
+  auto supportOf = [&](int i) {
+    Sample& s = samples[i];
+    if (std::isnan(s.hOwn))
+      s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c, s.axis, s.normal)) : 0;
   };
   // Step 2a's bound over [a.t, b.t] from one end's plane, less its round-off.
   auto planeBound = [&](const Sample& from, const Sample& a, const Sample& b) {
@@ -336,6 +344,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   };
   auto smooth = [](const Sample& s) { return s.z < HUGE_VAL && s.normal.z <= -1e-3; };
   auto boundOf = [&](int ia, int ib, double U) {
+    supportOf(ia), supportOf(ib);
     const Sample &a = samples[(ia)], &b = samples[(ib)];
     if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z), U};  // both ends are known
     const double enough = std::min(U - kProofGap, zTop_);
@@ -354,6 +363,42 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   const int s0 = sampleAt(0, -HUGE_VAL), s1 = sampleAt(1, -HUGE_VAL);
   int best = samples[(s1)].z < samples[(s0)].z ? s1 : s0;
   double U = samples[(best)].z;
+  auto result = [&]() -> LowestPoint {
+    if (!(U < cutoff)) return {};
+    LowestPoint out;
+    out.hit = true;
+    out.z = U;
+    out.normal = samples[(best)].normal;
+    out.t = samples[(best)].t;
+    if (out.normal.z == 0) out.normal = {0, 0, -1};
+    return out;
+  };
+
+  // Step 5: the minimum of f located by secant steps on f' alone (no bounds), then the
+  // whole move proven at once by step 4b. Where f' is unknown, nothing brackets a root,
+  // or the proof fails, step 3's branch and bound takes over with the samples so far.
+  {
+    int lo = s0, hi = s1;
+    for (int step = 0; step < kLocateSteps; ++step) {
+      const Sample &A = samples[lo], &B = samples[hi];
+      if (std::fabs(samples[best].slope) <= kClearanceSlope || !(A.slope < 0 && B.slope > 0)) break;
+      const double w = B.t - A.t, r = A.t + w * (-A.slope / (B.slope - A.slope));
+      const double ts = r > A.t + w / 1024 && r < B.t - w / 1024 ? r : A.t + 0.5 * w;
+      if (!(ts > A.t && ts < B.t)) break;
+      const int is = sampleAt(ts, -HUGE_VAL);
+      if (samples[is].z < U) U = samples[is].z, best = is;
+      if (samples[is].slope < 0) {
+        lo = is;
+      } else if (samples[is].slope > 0) {
+        hi = is;
+      } else {
+        break;
+      }
+    }
+  }
+  if (U < HUGE_VAL && rayClearsMove(c, curve_, {x, y, U - kProofGap}, samples[best].t, 0, 1))
+    return result();
+  int clearanceFrom = best, clearanceTries = 1;  // step 4b: the last sample it started from
 
   Interval open[kMaxSamples];
   int openCount = 0;
@@ -363,12 +408,16 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   auto push = [&](const Interval& iv) {
     if (!done(iv)) open[(openCount++)] = iv;
   };
-  push(boundOf(s0, s1, U));
+  {  // The intervals between the samples so far, in order of t.
+    int order[kMaxSamples];
+    for (int i = 0; i < count; ++i) order[i] = i;
+    std::sort(order, order + count, [&](int i, int j) { return samples[i].t < samples[j].t; });
+    for (int i = 0; i + 1 < count; ++i) push(boundOf(order[i], order[i + 1], U));
+  }
 
   auto bracketsMinimum = [&](const Interval& iv) {
     return samples[iv.a].slope < 0 && samples[iv.b].slope > 0;
   };
-  int clearanceFrom = -1, clearanceTries = 0;  // step 4b: the last sample it started from
   while (openCount > 0 && count < kMaxSamples) {
     // Until the best sample is a minimum of f to round-off (f' ~ 0, where step 2d proves
     // the intervals beside it at once), an interval whose ends bracket a root of f' is
@@ -439,14 +488,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     push(boundOf(is, iv.b, U));
   }
   if (openCount > 0 && count >= kMaxSamples) unprovenCount.fetch_add(1, std::memory_order_relaxed);
-  if (!(U < cutoff)) return {};
-  LowestPoint out;
-  out.hit = true;
-  out.z = U;
-  out.normal = samples[(best)].normal;
-  out.t = samples[(best)].t;
-  if (out.normal.z == 0) out.normal = {0, 0, -1};
-  return out;
+  return result();
 }
 
 }  // namespace scallop
