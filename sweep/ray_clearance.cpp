@@ -45,7 +45,7 @@ namespace scallop {
 
 namespace {
 
-constexpr int kMaxRungs = 48;  // per side; typical: 1 (a cutoff) to 8 (at the minimum)
+constexpr int kMaxRungs = 48;  // per side; typical: 1 to 4 (growing rungs)
 
 // dist(p, C) and its gradient (the unit vector from the nearest point of C), in the
 // cutter's frame: tip at the origin, unit axis a. p must lie outside C (dist > 0).
@@ -75,7 +75,7 @@ bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T
                 double slack) {
   if (!(T > 0)) return true;
   const double need = core.r + slack;  // dist(gamma, C) must exceed this
-  double u = 0;
+  double u = 0, last = 0;              // the rung's start, the last rung's length
   for (int rung = 0; rung < kMaxRungs; ++rung) {
     Vec3 grad;
     const double hu = core.at(p + v * u, &grad);
@@ -92,7 +92,9 @@ bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T
     const double next = std::min(T, u + 0.95 * (far - u));
     if (!(hu + g * (next - u) - 0.5 * E * next * next > need)) return false;
     if (next >= T) return true;
-    if (!(next - u > 1e-12)) return false;
+    // Rungs that shrink are closing in on a contact: the proof would fail there.
+    if (!(next - u > std::max(1e-12, 0.5 * last))) return false;
+    last = next - u;
     u = next;
   }
   return false;
