@@ -40,6 +40,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace scallop {
 
@@ -66,6 +67,22 @@ struct CoreDistance {
       *gradient = (perp * radial + a * (sign * ds)) / dist;
     }
     return dist;
+  }
+  // d^2/dtau^2 of dist(p + tau v, C) at tau = 0 (p outside C): 0 below the flat bottom,
+  // rho'' on the side, and (rho'^2 + s'^2 - dist'^2 + (rho - Rb) rho'') / dist at the
+  // rim (step 2's curvature bound has the derivation); NaN above the top.
+  double curvatureAlong(const Vec3& p, const Vec3& v) const {
+    const double s = dot(p, a), sv = dot(v, a);
+    const Vec3 perp = p - a * s, vPerp = v - a * sv;
+    const double rho = length(perp);
+    if (s > L) return std::numeric_limits<double>::quiet_NaN();
+    if (!(rho > rb)) return 0;
+    const double rhoDot = dot(perp, vPerp) / rho;
+    const double rhoDDot = (dot(vPerp, vPerp) - rhoDot * rhoDot) / rho;
+    if (s >= r) return rhoDDot;
+    const double X = rho - rb, sigma = r - s, d = std::sqrt(X * X + sigma * sigma);
+    const double dDot = (X * rhoDot - sigma * sv) / d;
+    return (rhoDot * rhoDot + sv * sv - dDot * dDot + X * rhoDDot) / d;
   }
 };
 
@@ -159,6 +176,31 @@ bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, doubl
   // Step 2: the curvature bound in one go where it applies, else rungs on both sides.
   if (curvatureClears(core, g0, g1, left, right, E, slack)) return true;
   return sideClears(core, g0, g1, right, E, slack) && sideClears(core, g0, -g1, left, E, slack);
+}
+
+double lowestPointCurvature(const Cutter& c, const PoseCurve& curve, double t, const Vec3& p) {
+  // f(t) solves G(t, f(t)) = 0 for G(t, z) = dist(gamma_z(t), C) - r (the point at
+  // height z of the line, seen from the cutter as in step 1), so implicit
+  // differentiation gives f' = -G_t / G_z and
+  //     f'' = -(G_tt + 2 G_tz f' + G_zz f'^2) / G_z,
+  // with G_t = g.gamma', G_tt = gamma'.H gamma' + g.gamma'', G_tz = z.H gamma' + g.(-Omega x z),
+  // G_zz = z.H z, where g and H are the gradient and Hessian of dist(., C) and, at the
+  // sample, gamma' = -Delta - Omega x u, gamma'' = Omega x (Omega x u) - Omega' x u +
+  // 2 Omega x Delta for u = p - tip(t).
+  const Vec3 tip = curve.tip(t);
+  const CoreDistance core{c.bottomRadius(), c.cornerRadius, c.fluteLength, curve.axis(t)};
+  const Vec3 u = p - tip, delta = curve.tipEnd() - curve.tipStart();
+  const Vec3 w = curve.spin(t), wDot = curve.spinRate(t), up{0, 0, 1};
+  const Vec3 v = -delta - cross(w, u);
+  const Vec3 acc = cross(w, cross(w, u)) - cross(wDot, u) + cross(w, delta) * 2;
+  Vec3 g;
+  if (!(core.at(u, &g) > 0) || !(g.z < 0)) return std::numeric_limits<double>::quiet_NaN();
+  const double vHv = core.curvatureAlong(u, v), zHz = core.curvatureAlong(u, up);
+  const double zHv = 0.25 * (core.curvatureAlong(u, v + up) - core.curvatureAlong(u, v - up));
+  const double Gz = g.z, Gt = dot(g, v);
+  const double Gtt = vHv + dot(g, acc), Gtz = zHv - dot(g, cross(w, up));
+  const double f1 = -Gt / Gz;
+  return -(Gtt + 2 * Gtz * f1 + zHz * f1 * f1) / Gz;
 }
 
 }  // namespace scallop

@@ -87,7 +87,8 @@ constexpr double kFlatSlope = 1e-8;  // mm per unit t: a sample at a minimum of 
 // mm per unit t: a sample near enough to a minimum of f for step 4b to be worth trying
 // (within s^2 / (2 f'') = 2e-10 mm of F for the f'' ~ 2.5e-3 mm of B3's moves).
 constexpr double kClearanceSlope = 1e-6;
-constexpr int kLocateSteps = 8;  // step 5's secant steps (B3: 1 to 3)
+constexpr int kNewtonSteps = 4;  // step 5a's probes after the middle (B3: 1)
+constexpr int kLocateSteps = 8;  // step 5b's secant steps in the ends' bracket
 
 // f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
 // A search keeps its samples in raw storage and constructs each one as it is taken:
@@ -371,9 +372,13 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     return Interval{ia, ib, lower, U};
   };
 
-  const int s0 = sampleAt(0, -HUGE_VAL), s1 = sampleAt(1, -HUGE_VAL);
-  int best = samples[(s1)].z < samples[(s0)].z ? s1 : s0;
-  double U = samples[(best)].z;
+  int best = -1;
+  double U = HUGE_VAL;
+  auto take = [&](double t) {
+    const int i = sampleAt(t, -HUGE_VAL);
+    if (best < 0 || samples[i].z < U) U = samples[i].z, best = i;
+    return i;
+  };
   auto result = [&]() -> LowestPoint {
     if (!(U < cutoff)) return {};
     LowestPoint out;
@@ -384,10 +389,38 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     if (out.normal.z == 0) out.normal = {0, 0, -1};
     return out;
   };
+  auto cleared = [&] {
+    return U < HUGE_VAL && rayClearsMove(c, curve_, {x, y, U - kProofGap}, samples[best].t, 0, 1);
+  };
 
-  // Step 5: the minimum of f located by secant steps on f' alone (no bounds), then the
-  // whole move proven at once by step 4b. Where f' is unknown, nothing brackets a root,
-  // or the proof fails, step 3's branch and bound takes over with the samples so far.
+  // Step 5: the minimum of f located without any bound, then the whole move proven at
+  // once by step 4b. (a) From the middle, Newton's step with f'' from the cutter's
+  // curvature there (lowestPointCurvature), then secant steps, clamped to [0, 1]: on CAM
+  // paths two samples. (b) Where that does not close the proof, secant steps inside the
+  // bracket of the ends. Where f' is unknown, nothing brackets a root, or the proof
+  // still fails, step 3's branch and bound takes over with every sample so far.
+  {
+    int prev = -1, cur = take(0.5);
+    for (int step = 0; step < kNewtonSteps; ++step) {
+      const Sample& s = samples[cur];
+      if (!std::isfinite(s.slope) || std::fabs(samples[best].slope) <= kClearanceSlope) break;
+      double next;
+      if (prev < 0) {
+        const double fpp = lowestPointCurvature(c, curve_, s.t, Vec3{x, y, s.z});
+        if (!(fpp > 0)) break;
+        next = s.t - s.slope / fpp;
+      } else {
+        const Sample& p = samples[prev];
+        if (!std::isfinite(p.slope) || p.slope == s.slope) break;
+        next = s.t - s.slope * (s.t - p.t) / (s.slope - p.slope);
+      }
+      next = std::clamp(next, 0.0, 1.0);
+      if (!(next != s.t)) break;
+      prev = cur, cur = take(next);
+    }
+  }
+  if (cleared()) return result();
+  const int s0 = take(0), s1 = take(1);
   {
     int lo = s0, hi = s1;
     for (int step = 0; step < kLocateSteps; ++step) {
@@ -396,8 +429,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
       const double w = B.t - A.t, r = A.t + w * (-A.slope / (B.slope - A.slope));
       const double ts = r > A.t + w / 1024 && r < B.t - w / 1024 ? r : A.t + 0.5 * w;
       if (!(ts > A.t && ts < B.t)) break;
-      const int is = sampleAt(ts, -HUGE_VAL);
-      if (samples[is].z < U) U = samples[is].z, best = is;
+      const int is = take(ts);
       if (samples[is].slope < 0) {
         lo = is;
       } else if (samples[is].slope > 0) {
@@ -407,8 +439,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
       }
     }
   }
-  if (U < HUGE_VAL && rayClearsMove(c, curve_, {x, y, U - kProofGap}, samples[best].t, 0, 1))
-    return result();
+  if (cleared()) return result();
   int clearanceFrom = best, clearanceTries = 1;  // step 4b: the last sample it started from
 
   Interval open[kMaxSamples];
@@ -419,8 +450,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   auto push = [&](const Interval& iv) {
     if (!done(iv)) open[(openCount++)] = iv;
   };
-  {  // The intervals between the samples so far, in order of t.
-    int order[kMaxSamples];
+  {                          // The intervals between the samples so far, in order of t.
+    int order[kMaxSamples];  // every sample so far
     for (int i = 0; i < count; ++i) order[i] = i;
     std::sort(order, order + count, [&](int i, int j) { return samples[i].t < samples[j].t; });
     for (int i = 0; i + 1 < count; ++i) push(boundOf(order[i], order[i + 1], U));

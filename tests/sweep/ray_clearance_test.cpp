@@ -173,5 +173,43 @@ TEST(RayClearance, ClearsHeightsJustBelowTheLowestPointOfCamLikeMoves) {
   EXPECT_EQ(flatCleared, 0);
 }
 
+// The search's Newton step: lowestPointCurvature is f'' of the lowest point, checked
+// against central differences of the reference's own stationary solver on CAM-like
+// moves (where the search uses it); lines whose contact changes face within the
+// difference step are skipped (f'' jumps there).
+TEST(RayClearance, LowestPointCurvatureIsTheSecondDerivative) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(0.1, 0.9);
+  int compared = 0, worstCase = -1;
+  double worst = 0;
+  for (int k = 0; k < 480; ++k) {
+    const Move m = randomMove(rng, k, Family::CamLike);
+    if (m.cutter.type == CutterType::Flat) continue;
+    const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
+    double x, y;
+    randomLine(rng, m, x, y);
+    const double t = u(rng), h = 1e-3;
+    auto f = [&](double s) {
+      return ref::stationaryLowest(m.refCutter, m.p0 + (m.p1 - m.p0) * s, ref::slerp(m.a0, m.a1, s),
+                                   x, y);
+    };
+    const ref::RefHit f0 = f(t), fm = f(t - h), fp = f(t + h), fm2 = f(t - 2 * h),
+                      fp2 = f(t + 2 * h);
+    if (!(f0.hit && fm.hit && fp.hit && fm2.hit && fp2.hit)) continue;
+    const double fd = (fp.z - 2 * f0.z + fm.z) / (h * h);
+    const double fd2 = (fp2.z - 2 * f0.z + fm2.z) / (4 * h * h);
+    if (std::fabs(fd - fd2) > 1e-3 * (1e-3 + std::fabs(fd))) continue;  // a face changes nearby
+    const double kernel = lowestPointCurvature(m.cutter, curve, t, {x, y, f0.z});
+    if (!std::isfinite(kernel)) continue;
+    ++compared;
+    const double err = std::fabs(kernel - fd) / (1e-4 + std::fabs(fd));
+    if (err > worst) worst = err, worstCase = k;
+    EXPECT_LT(err, 1e-2) << "move " << k << ": kernel " << kernel << ", differences " << fd;
+  }
+  std::printf("lowestPointCurvature: %d lines, worst relative difference %.2g (move %d)\n",
+              compared, worst, worstCase);
+  EXPECT_GE(compared, 100);
+}
+
 }  // namespace
 }  // namespace scallop
