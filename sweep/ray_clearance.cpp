@@ -155,7 +155,8 @@ bool curvatureClears(const CoreDistance& core, const Vec3& p, const Vec3& v, dou
 }  // namespace
 
 bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor, double t0,
-                   double t1) {
+                   double t1, bool* insideAtAnchor) {
+  if (insideAtAnchor) *insideAtAnchor = false;
   if (!(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
   const Vec3 tip = curve.tip(anchor), axis = curve.axis(anchor);
   const Vec3 delta = curve.tipEnd() - curve.tipStart();
@@ -171,7 +172,10 @@ bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, doubl
 
   // Step 3 first (cheap, and it needs dist > 0 at the anchor anyway).
   Vec3 n0;
-  if (!(core.at(g0, &n0) > core.r + slack)) return false;
+  if (!(core.at(g0, &n0) > core.r + slack)) {
+    if (insideAtAnchor) *insideAtAnchor = true;
+    return false;
+  }
   if (!(n0.z + (2 * V / core.r + omega) * reach < 0)) return false;
   // Step 2: the curvature bound in one go where it applies, else rungs on both sides.
   if (curvatureClears(core, g0, g1, left, right, E, slack)) return true;

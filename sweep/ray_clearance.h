@@ -21,8 +21,10 @@ namespace scallop {
 // [t0, t1]; `anchor` in [t0, t1] is where the cutter's motion is linearised (the
 // proof is tightest near it). Ball and bull cutters (r > 0); a flat cutter always
 // returns false (its sharp rim leaves the argument's normal bound without a radius).
+// `insideAtAnchor`, if given, is set when q lies inside the cutter's convex hull of core
+// and corner (K' below) at the anchor itself: no other anchor can clear it either.
 bool rayClearsMove(const Cutter& cutter, const PoseCurve& curve, const Vec3& q, double anchor,
-                   double t0, double t1);
+                   double t0, double t1, bool* insideAtAnchor = nullptr);
 
 // d^2 f / dt^2 at t for the lowest point f(t) of K(t) on the vertical line through p,
 // p being that lowest point (on K(t)'s boundary): the Newton step of the search's

@@ -222,9 +222,12 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   if (cutoff < HUGE_VAL) {
     const Vec3 q{x, y, cutoff};
     // From the middle first; where the motion curves too much for one tangent line,
-    // from each end over its half (the curve's term falls fourfold).
-    if (rayClearsMove(c, curve_, q, 0.5, 0, 1) ||
-        (rayClearsMove(c, curve_, q, 0, 0, 0.5) && rayClearsMove(c, curve_, q, 1, 0.5, 1)))
+    // from each end over its half (the curve's term falls fourfold), unless q lies in the
+    // cutter at the middle.
+    bool inside = false;
+    if (rayClearsMove(c, curve_, q, 0.5, 0, 1, &inside) ||
+        (!inside && rayClearsMove(c, curve_, q, 0, 0, 0.5) &&
+         rayClearsMove(c, curve_, q, 1, 0.5, 1)))
       return {};
   }
   const double omega = curve_.turnRate();
