@@ -43,9 +43,9 @@ namespace {
 // Distance from p (tool frame) to K0, for the Newton iteration: its value and slope
 // along z on every step, the whole gradient only for the normal of the answer.
 struct DistanceToCore {
-  Vec3 perp;             // p minus its axial part
-  double rho, ds, dr;    // distance from the axis; axial and radial excess over K0
-  double value;          // the distance, sqrt(ds^2 + dr^2)
+  Vec3 perp;           // p minus its axial part
+  double rho, ds, dr;  // distance from the axis; axial and radial excess over K0
+  double value;        // the distance, sqrt(ds^2 + dr^2)
 
   Vec3 gradient(const Vec3& a) const {
     if (!(value > 0)) return {};
@@ -532,8 +532,8 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, dou
     return lp;
   }
   if (vs < u0 - w_) {  // beyond the end: the cutter at t = 1
-    LowestPoint lp =
-        lowestPointOfCutter(cutter_, axis_, zMin_, qx - delta_.x, qy - delta_.y, envelopeZ - end_.z);
+    LowestPoint lp = lowestPointOfCutter(cutter_, axis_, zMin_, qx - delta_.x, qy - delta_.y,
+                                         envelopeZ - end_.z);
     lp.z += end_.z;
     return lp;
   }

@@ -1,0 +1,215 @@
+// The ray-clearance proof (sweep/ray_clearance.h) against the brute-force reference:
+// it must never clear a height at or above the true lowest point of a turning move
+// (soundness, over every kind of move), and it must clear heights just below it on
+// CAM-like moves (usefulness: what the turning-axis search relies on for speed).
+#include "sweep/ray_clearance.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "sweep/brute_force_reference.h"
+#include "sweep/pose_curve.h"
+
+namespace scallop {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 unitFromAngles(double polar, double azimuth) {
+  return {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+          std::cos(polar)};
+}
+
+struct Move {
+  Cutter cutter;
+  ref::RefCutter refCutter;
+  Vec3 p0, p1, a0, a1;
+};
+
+// Ball, flat and bull cutters; `camLike`: moves of 0.05 to 0.5 mm whose axis turns by up
+// to about 1 degree and leans up to 30 degrees, as 5-axis finishing paths are; otherwise
+// axes from vertical to horizontal, turns up to 90 degrees, feeds, ramps and plunges.
+enum class Family { CamLike, Turning, Any };
+Move randomMove(std::mt19937_64& rng, int k, Family family) {
+  const bool camLike = family == Family::CamLike;
+  std::uniform_real_distribution<double> u(0, 1);
+  Move m;
+  const double R = 1 + 4 * u(rng);
+  const CutterType type =
+      k % 3 == 0 ? CutterType::Ball : (k % 3 == 1 ? CutterType::Flat : CutterType::Bull);
+  const double r = type == CutterType::Bull ? R * (0.15 + 0.7 * u(rng)) : 0;
+  const double L = R * (2 + 3 * u(rng));
+  m.cutter = Cutter::make(type, R, r, L);
+  m.refCutter = ref::makeRefCutter(type, R, r, L);
+  const double lean = (family == Family::Any ? kPi / 2 : kPi / 6) * u(rng);
+  const double azimuth = 2 * kPi * u(rng);
+  // The turn's scale: ~1 degree (CAM-like), up to ~15 degrees (turning).
+  const double turn = camLike ? 0.017 : 0.26;
+  m.a0 = unitFromAngles(lean, azimuth);
+  for (;;) {
+    m.a1 = family == Family::Any ? unitFromAngles(0.5 * kPi * u(rng), 2 * kPi * u(rng))
+                                 : unitFromAngles(std::fabs(lean + turn * (u(rng) - 0.5)),
+                                                  azimuth + 2 * turn * (u(rng) - 0.5));
+    if (dot(m.a0, m.a1) >= 1e-3 && dot(m.a0, m.a1) < 1 - 1e-9) break;
+  }
+  const double len = camLike ? 0.05 + 0.45 * u(rng) * u(rng) : family == Family::Turning ? 0.5 : 3;
+  const double heading = 2 * kPi * u(rng);
+  m.p0 = {0, 0, 0};
+  m.p1 = {len * std::cos(heading), len * std::sin(heading), 0};
+  if (k % 4 == 1) m.p1.z = len * 0.5 * (u(rng) - 0.5);            // ramps
+  if (!camLike && k % 4 == 2) m.p1 = {0, 0, 2 * (u(rng) - 0.5)};  // plunges
+  if (!camLike && k % 4 == 3) m.p1 = m.p0;                        // pure turns about the tip
+  return m;
+}
+
+// The reference's lowest point on the line and the t where it is attained (a dense grid
+// of the reference's own stationary solver, refined by golden section).
+struct RefMinimum {
+  bool hit = false;
+  double z = 0, t = 0;
+};
+RefMinimum referenceMinimum(const Move& m, double x, double y) {
+  auto f = [&](double t) {
+    const ref::RefHit h = ref::stationaryLowest(m.refCutter, m.p0 + (m.p1 - m.p0) * t,
+                                                ref::slerp(m.a0, m.a1, t), x, y);
+    return h.hit ? h.z : HUGE_VAL;
+  };
+  RefMinimum best;
+  best.z = HUGE_VAL;
+  constexpr int kGrid = 400;
+  int kBest = -1;
+  for (int k = 0; k <= kGrid; ++k) {
+    const double z = f(double(k) / kGrid);
+    if (z < best.z) best.z = z, kBest = k;
+  }
+  if (kBest < 0) return best;
+  const auto refined =
+      ref::goldenMax([&](double t) { return -f(t); }, std::max(0.0, (kBest - 1.0) / kGrid),
+                     std::min(1.0, (kBest + 1.0) / kGrid));
+  best.hit = true;
+  best.t = double(kBest) / kGrid;
+  if (-refined.second <= best.z) best.z = -refined.second, best.t = refined.first;
+  return best;
+}
+
+// Lines over the move's footprint: the tip path widened by the cutter's reach.
+void randomLine(std::mt19937_64& rng, const Move& m, double& x, double& y) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double reach = 1.2 * m.cutter.radius;
+  x = 0.5 * (m.p0.x + m.p1.x) + (0.5 * std::fabs(m.p1.x - m.p0.x) + reach) * u(rng);
+  y = 0.5 * (m.p0.y + m.p1.y) + (0.5 * std::fabs(m.p1.y - m.p0.y) + reach) * u(rng);
+}
+
+// Soundness: a height at or above the true lowest point is never cleared, from any
+// anchor, on CAM-like moves, moves that turn by up to ~15 degrees and any move: just above it
+// (1e-8, 1e-6 mm), well above it, and above the whole cutter on that line (where only the
+// argument's "below" half can refuse it).
+TEST(RayClearance, NeverClearsAHeightAtOrAboveTheLowestPoint) {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> u(0, 1);
+  int checks = 0, hits = 0;
+  for (int k = 0; k < 600; ++k) {
+    const Family family = k % 5 == 0 ? Family::CamLike : k % 5 == 4 ? Family::Any : Family::Turning;
+    const Move m = randomMove(rng, k, family);
+    const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
+    for (int q = 0; q < 3; ++q) {
+      double x, y;
+      randomLine(rng, m, x, y);
+      const RefMinimum ref = referenceMinimum(m, x, y);
+      if (!ref.hit) continue;
+      ++hits;
+      const double above[] = {1e-8, 1e-6, 1e-3, 0.5, 2 * m.cutter.radius, 50};
+      const double anchors[] = {0, 0.5, 1, ref.t, u(rng)};
+      for (double dz : above) {
+        for (double anchor : anchors) {
+          ++checks;
+          EXPECT_FALSE(rayClearsMove(m.cutter, curve, {x, y, ref.z + dz}, anchor, 0, 1))
+              << "move " << k << " (" << toString(m.cutter.type) << ") line (" << x << ", " << y
+              << ") cleared " << dz << " mm above its lowest point " << ref.z
+              << " from t = " << anchor;
+        }
+      }
+    }
+  }
+  std::printf("RayClearance soundness: %d lines that meet the solid, %d checks\n", hits, checks);
+  EXPECT_GE(hits, 300);
+}
+
+// Usefulness: on CAM-like moves of ball and bull cutters, heights just below the lowest
+// point are cleared from an anchor at the minimum (what step 4b of the search asks),
+// and heights a few micrometres lower from the middle of the move (step 4a's cutoff
+// test). The rates are what the search's speed rests on; a flat cutter is never cleared.
+TEST(RayClearance, ClearsHeightsJustBelowTheLowestPointOfCamLikeMoves) {
+  std::mt19937_64 rng(4242);
+  int lines = 0, atMinimum = 0, fromMiddle = 0, flatCleared = 0, flatLines = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Move m = randomMove(rng, k, Family::CamLike);
+    const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
+    for (int q = 0; q < 3; ++q) {
+      double x, y;
+      randomLine(rng, m, x, y);
+      const RefMinimum ref = referenceMinimum(m, x, y);
+      if (!ref.hit) continue;
+      if (m.cutter.type == CutterType::Flat) {
+        ++flatLines;
+        flatCleared += rayClearsMove(m.cutter, curve, {x, y, ref.z - 1e-3}, ref.t, 0, 1);
+        continue;
+      }
+      ++lines;
+      atMinimum += rayClearsMove(m.cutter, curve, {x, y, ref.z - 1e-9}, ref.t, 0, 1);
+      fromMiddle += rayClearsMove(m.cutter, curve, {x, y, ref.z - 5e-3}, 0.5, 0, 1);
+    }
+  }
+  std::printf(
+      "RayClearance on CAM-like moves: %d lines; cleared 1e-9 mm below from the minimum: %d, "
+      "5 um below from the middle: %d; flat cutter: %d of %d\n",
+      lines, atMinimum, fromMiddle, flatCleared, flatLines);
+  ASSERT_GE(lines, 300);
+  EXPECT_GE(atMinimum, lines * 8 / 10);
+  EXPECT_GE(fromMiddle, lines * 8 / 10);
+  EXPECT_EQ(flatCleared, 0);
+}
+
+// The search's Newton step: lowestPointCurvature is f'' of the lowest point, checked
+// against central differences of the reference's own stationary solver on CAM-like
+// moves (where the search uses it); lines whose contact changes face within the
+// difference step are skipped (f'' jumps there).
+TEST(RayClearance, LowestPointCurvatureIsTheSecondDerivative) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(0.1, 0.9);
+  int compared = 0, worstCase = -1;
+  double worst = 0;
+  for (int k = 0; k < 480; ++k) {
+    const Move m = randomMove(rng, k, Family::CamLike);
+    if (m.cutter.type == CutterType::Flat) continue;
+    const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
+    double x, y;
+    randomLine(rng, m, x, y);
+    const double t = u(rng), h = 1e-3;
+    auto f = [&](double s) {
+      return ref::stationaryLowest(m.refCutter, m.p0 + (m.p1 - m.p0) * s, ref::slerp(m.a0, m.a1, s),
+                                   x, y);
+    };
+    const ref::RefHit f0 = f(t), fm = f(t - h), fp = f(t + h), fm2 = f(t - 2 * h),
+                      fp2 = f(t + 2 * h);
+    if (!(f0.hit && fm.hit && fp.hit && fm2.hit && fp2.hit)) continue;
+    const double fd = (fp.z - 2 * f0.z + fm.z) / (h * h);
+    const double fd2 = (fp2.z - 2 * f0.z + fm2.z) / (4 * h * h);
+    if (std::fabs(fd - fd2) > 1e-3 * (1e-3 + std::fabs(fd))) continue;  // a face changes nearby
+    const double kernel = lowestPointCurvature(m.cutter, curve, t, {x, y, f0.z});
+    if (!std::isfinite(kernel)) continue;
+    ++compared;
+    const double err = std::fabs(kernel - fd) / (1e-4 + std::fabs(fd));
+    if (err > worst) worst = err, worstCase = k;
+    EXPECT_LT(err, 1e-2) << "move " << k << ": kernel " << kernel << ", differences " << fd;
+  }
+  std::printf("lowestPointCurvature: %d lines, worst relative difference %.2g (move %d)\n",
+              compared, worst, worstCase);
+  EXPECT_GE(compared, 100);
+}
+
+}  // namespace
+}  // namespace scallop
