@@ -158,6 +158,21 @@ Vec3 PoseCurve::tipVelocity(double t) const {
   return cross(Vec3{0, 0, 1}, rotZ(tq + e_, -spin)) * -dSpin_ + rotZ(inner, -spin);
 }
 
+Vec3 PoseCurve::tipAcceleration(double t) const {
+  if (linearTip()) return {};
+  // With P = T(psi) q and W = P + e: P' = -dT n x P + T dq, P'' = -dT n x (P' + T dq);
+  // tip' = -dC z x (Z W) + Z P', so tip'' = -dC z x (tip' + Z P') + Z P''.
+  const bool bc = kind_ == Kind::JointBC;
+  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
+  const Vec3 n = bc ? Vec3{0, 1, 0} : Vec3{1, 0, 0}, z{0, 0, 1};
+  const Vec3 tq = tiltRotation(bc, q0_ + dq_ * t, -tilt), tdq = tiltRotation(bc, dq_, -tilt);
+  const Vec3 p1 = cross(n, tq) * -dTilt_ + tdq;
+  const Vec3 p2 = cross(n, p1 + tdq) * -dTilt_;
+  const Vec3 zp1 = rotZ(p1, -spin);
+  const Vec3 v = cross(z, rotZ(tq + e_, -spin)) * -dSpin_ + zp1;
+  return cross(z, v + zp1) * -dSpin_ + rotZ(p2, -spin);
+}
+
 Vec3 PoseCurve::tip(double t) const {
   if (t >= 1) return tip1_;
   if (!linearTip()) return t <= 0 ? tip0_ : forward(t);

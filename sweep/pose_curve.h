@@ -68,6 +68,8 @@ class PoseCurve {
   Vec3 tip(double t) const;
   // d tip / dt (mm per unit t).
   Vec3 tipVelocity(double t) const;
+  // d^2 tip / dt^2 (mm per unit t^2): zero for the kinds whose tip is linear.
+  Vec3 tipAcceleration(double t) const;
   // Proven bounds over [0, 1] of |d^2 tip / dt^2| and |d^3 tip / dt^3| (mm per unit
   // t^2, t^3): 0 for the kinds whose tip is linear.
   double tipAccelBound() const { return tipAccel_; }

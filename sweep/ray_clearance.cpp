@@ -1,7 +1,8 @@
 // The ray-clearance proof for a move whose axis turns.
 //
-// Notation as in swept_move.cpp: pose(t) from a PoseCurve, tip(t) = p0 + t Delta, the
-// cutter turned rigidly by R(t) about its tip, |Omega| <= omega. Every cutter is
+// Notation as in swept_move.cpp: pose(t) from a PoseCurve (tip(t) = p0 + t Delta, or a
+// curve with TCP off), the cutter turned rigidly by R(t) about its tip, |Omega| <= omega.
+// Every cutter is
 //     K = ( C (+) Ball(r) ) n { s <= L },   C = Cyl(Rb; s in [r, L])        (cutter.h)
 // so K lies in K' = C (+) Ball(r), and a point p lies outside K' iff dist(p, C) > r.
 // dist(., C) is the distance to a convex set: convex and 1-Lipschitz, with the closed
@@ -10,11 +11,13 @@
 //
 //   1. The cutter's frame at the anchor ts. Seen from the cutter, Q moves along
 //          gamma(t) = R(ts) R(t)^-1 (Q - tip(t)),   gamma(ts) = Q - tip(ts),
-//          gamma'(ts) = -Delta - Omega(ts) x (Q - tip(ts)),
+//          gamma'(ts) = -tip'(ts) - Omega(ts) x (Q - tip(ts)),
 //      and world up is d(t) = R(ts) R(t)^-1 z, d(ts) = z. The curve's rates bound R^-1
 //      as they bound R (both kinds are products of rotations at constant rates about
-//      fixed axes; so are their inverses): |gamma'| <= V = |Delta| + omega D and
-//      |gamma''| <= E = omega^2 D + 2 omega |Delta|, D >= |Q - tip(t)| on [t0, t1],
+//      fixed axes; so are their inverses): |gamma'| <= V = S + omega D and
+//      |gamma''| <= E = omega^2 D + 2 omega S + A, D >= |Q - tip(t)| on [t0, t1],
+//      S >= |tip'| there and A >= |tip''| (A = 0 and S = |p1 - p0| for a linear tip;
+//      the tip of a machine with TCP off follows a curve, pose_curve.h),
 //      |d'| <= omega. So gamma stays within E tau^2 / 2 of its tangent line
 //      ell(tau) = gamma(ts) + tau gamma'(ts), tau = t - ts (Taylor, integral form).
 //   2. Outside. h(tau) = dist(ell(tau), C) is convex in tau (a convex function along a
@@ -158,15 +161,15 @@ bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, doubl
                    double t1, bool* insideAtAnchor) {
   if (insideAtAnchor) *insideAtAnchor = false;
   if (!(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
-  const Vec3 tip = curve.tip(anchor), axis = curve.axis(anchor);
-  const Vec3 delta = curve.tipEnd() - curve.tipStart();
-  const double omega = curve.turnRate(), move = length(delta);
+  const Vec3 tip = curve.tip(anchor), axis = curve.axis(anchor), vel = curve.tipVelocity(anchor);
+  const double omega = curve.turnRate(), A = curve.tipAccelBound();
   const Vec3 g0 = q - tip;
-  const Vec3 g1 = -delta - cross(curve.spin(anchor), g0);  // gamma'(anchor)
+  const Vec3 g1 = -vel - cross(curve.spin(anchor), g0);  // gamma'(anchor)
   const double left = anchor - t0, right = t1 - anchor, reach = std::max(left, right);
+  const double move = length(vel) + A * reach;  // >= |tip'| over the range
   const double D = length(g0) + move * reach;
   const double V = move + omega * D;
-  const double E = (omega * omega * D + 2 * omega * move) * (1 + 1e-12);
+  const double E = (omega * omega * D + 2 * omega * move + A) * (1 + 1e-12);
   const CoreDistance core{c.bottomRadius(), c.cornerRadius, c.fluteLength, axis};
   const double slack = 1e-12 * (1 + D + c.fluteLength);
 
@@ -189,11 +192,12 @@ double lowestPointCurvature(const Cutter& c, const PoseCurve& curve, double t, c
   //     f'' = -(G_tt + 2 G_tz f' + G_zz f'^2) / G_z,
   // with G_t = g.gamma', G_tt = gamma'.H gamma' + g.gamma'', G_tz = z.H gamma' + g.(-Omega x z),
   // G_zz = z.H z, where g and H are the gradient and Hessian of dist(., C) and, at the
-  // sample, gamma' = -Delta - Omega x u, gamma'' = Omega x (Omega x u) - Omega' x u +
-  // 2 Omega x Delta for u = p - tip(t).
+  // sample, gamma' = -tip' - Omega x u, gamma'' = Omega x (Omega x u) - Omega' x u +
+  // 2 Omega x tip' - tip'' for u = p - tip(t) (tip'' left out: it is 0 for a linear tip,
+  // and this only chooses where to sample).
   const Vec3 tip = curve.tip(t);
   const CoreDistance core{c.bottomRadius(), c.cornerRadius, c.fluteLength, curve.axis(t)};
-  const Vec3 u = p - tip, delta = curve.tipEnd() - curve.tipStart();
+  const Vec3 u = p - tip, delta = curve.tipVelocity(t);
   const Vec3 w = curve.spin(t), wDot = curve.spinRate(t), up{0, 0, 1};
   const Vec3 v = -delta - cross(w, u);
   const Vec3 acc = cross(w, cross(w, u)) - cross(wDot, u) + cross(w, delta) * 2;

@@ -82,7 +82,7 @@ namespace scallop {
 namespace {
 
 constexpr double kProofGap = 1e-9;   // mm: proven lower bound and height returned meet
-constexpr int kMaxSamples = 256;     // a guard: typical searches take 3 to 40
+constexpr int kMaxSamples = 1024;    // a guard: typical searches take 2 to 40
 constexpr double kFlatSlope = 1e-8;  // mm per unit t: a sample at a minimum of f
 // mm per unit t: a sample near enough to a minimum of f for step 4b to be worth trying
 // (within s^2 / (2 f'') = 2e-10 mm of F for the f'' ~ 2.5e-3 mm of B3's moves).
@@ -101,8 +101,34 @@ struct Sample {
   Vec3 normal;   // unit, normal.z < 0; zero when no plane is known
   double hOwn;   // support of K(t) - tip(t) in `normal` (every bound needs it)
   double slope;  // df/dt where known, else NaN
+  Vec3 vel, acc;  // d tip / dt and d^2 tip / dt^2 at t
   Vec3 dn, ddn;  // d/dt and d2/dt2 of `normal` carried with the cutter (steps 2b, 2d)
 };
+
+// What step 2's bounds need of the tip's motion: where it is linear (CL data, TCP on),
+// its chord p1 - p0, which is its velocity; on a curve (TCP off, pose_curve.h) bounds of
+// its speed and acceleration over [0, 1], mm per unit t and t^2.
+struct TipBounds {
+  Vec3 delta;
+  bool linear;
+  double speed;  // >= |tip'(t)|: |delta| when linear
+  double accel;  // >= |tip''(t)|: 0 when linear
+  double jerk;   // >= |tip'''(t)|: 0 when linear
+  // A bound of |N . tip'(t)| over the move.
+  double rateAlong(const Vec3& N) const { return linear ? std::fabs(dot(N, delta)) : speed; }
+};
+
+// |tip'(t)| <= |tip'(end)| + A |t - end| for the nearer end: at most the larger end speed
+// plus A / 2 (exactly |p1 - p0| for a linear tip).
+double tipSpeedBound(const PoseCurve& curve) {
+  if (curve.linearTip()) return length(curve.tipEnd() - curve.tipStart());
+  return std::max(length(curve.tipVelocity(0)), length(curve.tipVelocity(1))) +
+         0.5 * curve.tipAccelBound();
+}
+TipBounds tipBoundsOf(const PoseCurve& curve, double speed) {
+  return {curve.tipEnd() - curve.tipStart(), curve.linearTip(), speed, curve.tipAccelBound(),
+          curve.tipJerkBound()};
+}
 
 struct Interval {
   int a, b;      // samples at its ends (ta < tb)
@@ -133,7 +159,7 @@ SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
     segment_ = std::make_shared<const SweptSegment>(cutter, curve_.tipStart(), curve_.tipEnd(),
                                                     curve_.axis(0));
   else
-    zTop_ = support({0, 0, 1});
+    tipSpeed_ = tipSpeedBound(curve_), zTop_ = support({0, 0, 1});
 }
 
 SweptMove::SweptMove(const SweptSegment& segment)
@@ -155,13 +181,13 @@ namespace {
 
 // The chord bound of step 2a: H >= max over [a.t, b.t] of h_t(N), N unit, given the
 // supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
-double supportOver(const Cutter& c, double omega, double reach, const Vec3& delta, const Sample& a,
-                   double hKa, const Sample& b, double hKb, const Vec3& N) {
+double supportOver(const Cutter& c, double omega, double reach, const TipBounds& tip,
+                   const Sample& a, double hKa, const Sample& b, double hKb, const Vec3& N) {
   const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
   const double w = b.t - a.t;
   if (omega == 0 || w <= 0) return h;
   // The cap of the points that can attain the support during the interval.
-  const double V = std::fabs(dot(N, delta)) + omega * reach;
+  const double V = tip.rateAlong(N) + omega * reach;
   const double u = dot(N, a.axis);
   double rho = reach;
   if (u < 0) {
@@ -170,7 +196,7 @@ double supportOver(const Cutter& c, double omega, double reach, const Vec3& delt
     const double s = std::clamp(sMax, 0.0, c.fluteLength);
     rho = std::min(reach, std::sqrt(s * s + c.radius * c.radius));
   }
-  return h + omega * omega * rho * w * w / 8;
+  return h + (omega * omega * rho + tip.accel) * w * w / 8;
 }
 
 }  // namespace
@@ -184,7 +210,7 @@ double SweptMove::support(const Vec3& dir) const {
   b.t = 1, b.tip = curve_.tip(1), b.axis = curve_.axis(1);
   const Vec3 N = dir / len;
   const double h = supportOver(
-      cutter_, curve_.turnRate(), reach_, curve_.tipEnd() - curve_.tipStart(), a,
+      cutter_, curve_.turnRate(), reach_, tipBoundsOf(curve_, tipSpeed_), a,
       dot(N, cutterSupport(cutter_, a.axis, N)), b, dot(N, cutterSupport(cutter_, b.axis, N)), N);
   // Round-off of the few products above, scaled back to dir's length.
   return len * (h + 1e-12 * (1 + std::fabs(h)));
@@ -231,7 +257,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
       return {};
   }
   const double omega = curve_.turnRate();
-  const Vec3 delta = curve_.tipEnd() - curve_.tipStart();
+  const TipBounds tipMotion = tipBoundsOf(curve_, tipSpeed_);
+  const double accel = tipMotion.accel, jerk = tipMotion.jerk;
 
   alignas(Sample) unsigned char sampleStorage[kMaxSamples * sizeof(Sample)];
   Sample* const samples = reinterpret_cast<Sample*>(sampleStorage);
@@ -245,6 +272,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     s.normal = {};
     s.slope = std::numeric_limits<double>::quiet_NaN();
     s.tip = curve_.tip(t);
+    s.vel = curve_.tipVelocity(t);
+    s.acc = curve_.tipAcceleration(t);
     s.axis = curve_.axis(t);
     const LowestPoint lp = cutterLowestPoint(c, s.axis, x - s.tip.x, y - s.tip.y, zBelow - s.tip.z);
     if (lp.hit) s.z = lp.z + s.tip.z;
@@ -252,7 +281,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
       s.normal = lp.normal;
       // f' = (N . v) / N.z, v the velocity of the cutter point at the lowest point.
       const Vec3 spin = curve_.spin(t);
-      const Vec3 v = delta + cross(spin, Vec3{x, y, s.z} - s.tip);
+      const Vec3 v = s.vel + cross(spin, Vec3{x, y, s.z} - s.tip);
       s.slope = dot(s.normal, v) / s.normal.z;
       s.dn = cross(spin, s.normal);
       s.ddn = cross(curve_.spinRate(t), s.normal) + cross(spin, s.dn);
@@ -275,18 +304,23 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     if (N.z == 0) return -HUGE_VAL;
     const Sample& other = &from == &a ? b : a;
     const double hOther = dot(N, cutterSupport(c, other.axis, N));
-    const double H = &from == &a ? supportOver(c, omega, reach_, delta, a, from.hOwn, b, hOther, N)
-                                 : supportOver(c, omega, reach_, delta, a, hOther, b, from.hOwn, N);
+    const double H = &from == &a
+                         ? supportOver(c, omega, reach_, tipMotion, a, from.hOwn, b, hOther, N)
+                         : supportOver(c, omega, reach_, tipMotion, a, hOther, b, from.hOwn, N);
     const double nq = N.x * x + N.y * y;
     const double z = (H - nq) / N.z;
     return z - 1e-12 * (1 + std::fabs(H) + std::fabs(nq)) / -N.z;
   };
   // Steps 2b and 2d share the plane fixed to the cutter at a sample S and its
   // derivatives: g(t) = N(t).(Q - tip(t)) - h_S with N(t) = R(t) R(tS)^-1 N_S, so that
-  //   g'  = N'.(Q - tip) - N.(p1 - p0),     N'  = Omega x N,
-  //   g'' = N''.(Q - tip) - 2 N'.(p1 - p0), N'' = Omega' x N + Omega x (Omega x N),
-  // and |g'''| <= omega^3 D + 3 omega^2 |p1 - p0| (|N^(k)| <= omega^k), D >= |Q - tip|.
-  const double move = length(delta);
+  //   g'  = N'.(Q - tip) - N.tip',                N'  = Omega x N,
+  //   g'' = N''.(Q - tip) - 2 N'.tip' - N.tip'',  N'' = Omega' x N + Omega x (Omega x N),
+  // and |g'''| <= omega^3 D + 3 omega^2 S + 3 omega A + J (|N^(k)| <= omega^k, D >=
+  // |Q - tip|, S, A, J >= |tip'|, |tip''|, |tip'''|; A = J = 0 for a linear tip).
+  const double move = tipMotion.speed;  // bounds the tip's path length, mm
+  auto thirdDerivative = [&](double D) {  // the bound of |g'''| above
+    return omega * omega * omega * D + 3 * omega * omega * move + 3 * omega * accel + jerk;
+  };
   auto distanceBound = [&](const Sample& a, const Sample& b, double zLow, double zHigh) {
     double D = 0;  // >= |Q - tip(t)| for t in [a.t, b.t] and Q.z in [zLow, zHigh]
     for (const Sample* e : {&a, &b})
@@ -308,11 +342,11 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     const double h = from.hOwn;
     const double floor = std::min(a.tip.z, b.tip.z) - reach_;
     const double D = distanceBound(a, b, floor, U);
-    const double cross2 = 2 * dot(from.dn, delta);
+    const double cross2 = 2 * dot(from.dn, from.vel) + dot(Na, from.acc);
     double gpp = -HUGE_VAL;  // sup of g'' over the interval and those heights
     for (double z : {floor, U})
       gpp = std::max(gpp, dot(from.ddn, Vec3{x, y, z} - from.tip) - cross2);
-    gpp += (omega * omega * omega * D + 3 * omega * omega * move) * w;
+    gpp += thirdDerivative(D) * w;
     const double margin = std::max(0.0, gpp) * w * w / 8;
     auto planeZ = [&](const Vec3& N, const Sample& e) {
       const double nq = N.x * (x - e.tip.x) + N.y * (y - e.tip.y);
@@ -333,10 +367,10 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     if (std::max(N.z, curve_.carry(N, from.t, from.t == a.t ? b.t : a.t).z) + omega * w >= 0)
       return false;
     const Vec3 q = Vec3{x, y, z} - from.tip;
-    const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, delta);
+    const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, from.vel);
     const double D = distanceBound(a, b, z, z);
-    const double m = dot(from.ddn, q) - 2 * dot(from.dn, delta) -
-                     (omega * omega * omega * D + 3 * omega * omega * move) * w;
+    const double m = dot(from.ddn, q) - 2 * dot(from.dn, from.vel) - dot(N, from.acc) -
+                     thirdDerivative(D) * w;
     const double ta = a.t - from.t, tb = b.t - from.t;
     double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
     if (m > 0 && -g1 / m > ta && -g1 / m < tb) low = std::min(low, g0 - 0.5 * g1 * g1 / m);
@@ -345,9 +379,15 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   // Step 2c's bound: every K(t) of the interval lies within delta of K at its middle
   // pose, so the lowest point of that cutter grown by delta bounds them all (+inf: the
   // line misses every one).
-  const double speed = length(delta) + omega * reach_;  // |dp/dt| of any cutter point
+  // |dp/dt| of any cutter point: the tip's speed plus omega reach. On a curved tip the
+  // interval's own speed bound, |tip'(tc)| + A w / 2, is tighter than the move's.
   auto grownBound = [&](const Sample& a, const Sample& b) {
-    const double tc = 0.5 * (a.t + b.t), grow = speed * 0.5 * (b.t - a.t) * (1 + 1e-12) + 1e-12;
+    const double tc = 0.5 * (a.t + b.t), w = b.t - a.t;
+    const double tipSpeed = tipMotion.linear
+                                ? move
+                                : std::min(move, length(curve_.tipVelocity(tc)) + 0.5 * accel * w);
+    const double speed = tipSpeed + omega * reach_;
+    const double grow = speed * 0.5 * w * (1 + 1e-12) + 1e-12;
     const Vec3 axis = curve_.axis(tc), tip = curve_.tip(tc) - axis * grow;
     // K (+) Ball(grow) lies in the cutter with R, r grown by `grow` and L by twice that,
     // whose tip is `grow` lower along the axis (the same core, swept a ball wider).

@@ -77,6 +77,7 @@ class SweptMove {
   std::shared_ptr<const SweptSegment> segment_;  // constant axis only
   double reach_ = 0;  // farthest cutter point from the tip, hypot(L, R), mm
   double zTop_ = 0;   // turning: an upper bound of the solid's highest z, mm
+  double tipSpeed_ = 0;  // turning: >= |d tip / dt| over the move, mm per unit t
 };
 
 }  // namespace scallop

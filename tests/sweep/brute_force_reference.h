@@ -110,12 +110,15 @@ inline Vec3 slerp(const Vec3& a0, const Vec3& a1, double t) {
   return (a0 * std::sin((1 - t) * phi) + a1 * std::sin(t * phi)) / std::sin(phi);
 }
 
-// A pose curve as the reference sees it: tip straight from p0 to p1, the axis any
-// function of t (the tests write slerp and the machines' formulas from CONVENTIONS.md
+// A pose curve as the reference sees it: tip straight from p0 to p1 (or any function of
+// t), the axis any function of t (the tests write slerp and the machines' formulas from CONVENTIONS.md
 // themselves).
 struct RefCurve {
   Vec3 p0, p1;
   std::function<Vec3(double)> axis;
+  // The tip on a curve (a machine with TCP off, its forward kinematics written by the
+  // test); empty: straight from p0 to p1.
+  std::function<Vec3(double)> tip = {};
 };
 
 // Lowest point on the vertical line (x, y) of the solid swept along a curve whose axis

@@ -1,6 +1,7 @@
 // PoseCurve's machine kinds (sweep/pose_curve.h): the table-table forward kinematics
 // against LinuxCNC's trtfuncs formulas written out here term by term, and the tip's
-// velocity and its proven acceleration and jerk bounds against finite differences.
+// velocity, acceleration and proven acceleration and jerk bounds against finite
+// differences.
 #include "sweep/pose_curve.h"
 
 #include <gtest/gtest.h>
@@ -8,30 +9,10 @@
 #include <cmath>
 #include <random>
 
+#include "sweep/machine_reference.h"
+
 namespace scallop {
 namespace {
-
-// xyzbcKinematicsForward / xyzacKinematicsForward as trtfuncs.c writes them (offsets
-// x/y/z, the z offset including the tool offset), angles in radians.
-Vec3 trtForward(const TableMachine& m, const Vec3& j, double tilt, double c) {
-  const double xr = m.pivot.x, yr = m.pivot.y, zr = m.pivot.z;
-  const double dx = m.offset.x, dy = m.offset.y, dz = m.offset.z;
-  const double sc = std::sin(c), cc = std::cos(c), st = std::sin(tilt), ct = std::cos(tilt);
-  if (m.kinematics == RotaryKinematics::TableBC)
-    return {cc * ct * (j.x - dx - xr) + sc * (j.y - yr) - cc * st * (j.z - dz - zr) + cc * dx + xr,
-            -sc * ct * (j.x - dx - xr) + cc * (j.y - yr) + sc * st * (j.z - dz - zr) - sc * dx + yr,
-            st * (j.x - dx - xr) + ct * (j.z - dz - zr) + dz + zr};
-  return {cc * (j.x - xr) + sc * ct * (j.y - dy - yr) + sc * st * (j.z - dz - zr) + sc * dy + xr,
-          -sc * (j.x - xr) + cc * ct * (j.y - dy - yr) + cc * st * (j.z - dz - zr) + cc * dy + yr,
-          -st * (j.y - dy - yr) + ct * (j.z - dz - zr) + dz + zr};
-}
-
-// CONVENTIONS.md "Machines": the tool axis in the part frame.
-Vec3 conventionAxis(RotaryKinematics k, double tilt, double c) {
-  if (k == RotaryKinematics::TableBC)
-    return {-std::cos(c) * std::sin(tilt), std::sin(c) * std::sin(tilt), std::cos(tilt)};
-  return {std::sin(c) * std::sin(tilt), std::cos(c) * std::sin(tilt), std::cos(tilt)};
-}
 
 struct Case {
   TableMachine machine;
@@ -105,6 +86,9 @@ TEST(PoseCurve, TipVelocityAndBoundsAgreeWithFiniteDifferences) {
       // Central-difference error: h^2 / 6 |tip'''|, plus round-off.
       EXPECT_NEAR(length(curve.tipVelocity(t) - v), 0, h1 * h1 * jerk + 1e-8 * (1 + length(v)))
           << k;
+      // tipAcceleration: central differences of tipVelocity.
+      const Vec3 dv = (curve.tipVelocity(t + h1) - curve.tipVelocity(t - h1)) / (2 * h1);
+      EXPECT_NEAR(length(curve.tipAcceleration(t) - dv), 0, 1e-6 * (1 + length(dv))) << k;
       const double h2 = 1e-3;
       const Vec3 a = (f(t + h2) - f(t) * 2 + f(t - h2)) / (h2 * h2);
       const Vec3 j =
