@@ -89,7 +89,7 @@ TEST(AptReader, EachCutterCutsTheMovesAfterIt) {
   ASSERT_EQ(f.path.cutters.size(), 2u);
   EXPECT_EQ(f.path.cutters[0].type, CutterType::Flat);
   EXPECT_EQ(f.path.cutters[1].type, CutterType::Ball);
-  EXPECT_EQ(f.toolNumbers, (std::vector<int64_t>{4, 5}));  // LOADTL's number, then the line
+  EXPECT_EQ(f.toolNumbers, (std::vector<int64_t>{4, 2}));  // LOADTL's number, then the order
   ASSERT_EQ(f.path.moves.size(), 3u);
   EXPECT_EQ(f.path.moves[0].tool, 0);
   EXPECT_EQ(f.path.moves[1].tool, 1);

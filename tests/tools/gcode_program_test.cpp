@@ -138,6 +138,11 @@ TEST(GcodeProgram, WhatCannotBeSimulatedIsRefusedWithItsLine) {
   EXPECT_NE(error(s + "G83 X1 Z-2 R1\n").find("p.nc:2: G83 needs a peck depth Q"),
             std::string::npos);
   EXPECT_NE(error(s + "G81 X1 Z-2\n").find("p.nc:2: G81 needs Z"), std::string::npos);
+  // A hang-sized cycle is refused before its moves are made.
+  EXPECT_NE(error(s + "G83 X1 Z-2 R1 Q0.000001\n").find("p.nc:2: G83: more than a million moves"),
+            std::string::npos);
+  EXPECT_NE(error(s + "G73 X1 Z-2 R1 Q0.01 L10000\n").find("p.nc:2: G73: more than a million"),
+            std::string::npos);
   EXPECT_EQ(error("O1000\n%\n" + s + "G1 X1\n%\n"), "");
 }
 

@@ -189,8 +189,9 @@ class AptParser {
     const auto it = std::find_if(cutters_.begin(), cutters_.end(), same);
     tool_ = uint16_t(it - cutters_.begin());
     if (it == cutters_.end()) {
+      if (cutters_.size() >= 65535) throw InputError(where_, "more than 65535 cutters in one file");
       cutters_.push_back(c);
-      numbers_.push_back(loaded_ >= 0 ? loaded_ : st.line);
+      numbers_.push_back(loaded_ >= 0 ? loaded_ : int64_t(cutters_.size()));
     }
     loaded_ = -1;  // a LOADTL numbers the one CUTTER/ after it
   }

@@ -68,6 +68,7 @@ void GcodeInterpreter::selectTool(const GcodeBlock& b, bool change) {
   const auto it = std::find(numbers.begin(), numbers.end(), selected_);
   spindle_ = int(it - numbers.begin());
   if (it == numbers.end()) {
+    if (numbers.size() >= 65535) throw InputError(where_, "more than 65535 tools in one program");
     out_.toolNumbers.push_back(selected_);
     out_.path.cutters.push_back(tools.at(selected_));
   }
@@ -367,8 +368,12 @@ void GcodeInterpreter::cycle(const GcodeBlock& b) {
     throw InputError(where_, fmt::format("{}: the hole bottom Z = {:g} mm is above the R level "
                                          "{:g} mm",
                                          name, c.bottomZ, c.clearZ));
-  if (pecks && (c.clearZ - c.bottomZ) / c.peck > 1e5)
-    throw InputError(where_, name + ": more than 100000 pecks of Q in the hole");
+  // A line makes at most a million moves, as an arc does (gcode_arc.h).
+  const double holeMoves = 4 + (pecks ? 3 * std::ceil((c.clearZ - c.bottomZ) / c.peck) : 2);
+  if (holeMoves * repeats > 1e6)
+    throw InputError(where_, name +
+                                 ": more than a million moves in one line (pecks of Q times "
+                                 "L repeats)");
   for (int rep = 0; rep < int(repeats); ++rep) {
     double x = state_.pos.x, y = state_.pos.y;
     if (absolute_) {

@@ -85,8 +85,8 @@ struct ToolPathFile {
   PathWarnings warnings;
   std::optional<Cutter> cutter;  // APT CUTTER/ statement, when present
   double arcTolerance = 0;       // mm, for G-code arcs (0 when the format has none)
-  // A multi-tool file: toolNumbers[k] is the T number (G-code, APT LOADTL) or the
-  // CUTTER/ statement's line (APT without LOADTL) of path.cutters[k].
+  // A multi-tool file: toolNumbers[k] is the T number (G-code, APT LOADTL) of
+  // path.cutters[k], or for APT CUTTER/s without LOADTL, k + 1 (their order).
   std::vector<int64_t> toolNumbers;
   IgnoredWords ignored;
 
