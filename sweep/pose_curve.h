@@ -28,10 +28,9 @@
 //     as above), q'' = 0 and |q(t)| <= max(|q(0)|, |q(1)|) = Q (|q| is convex in t):
 //         |tip''|  <= omega^2 Q + 2 omega |q'| + |wC|^2 |e|,
 //         |tip'''| <= omega^3 Q + 3 omega^2 |q'| + |wC|^3 |e|   (tipAccelBound/JerkBound).
-// A new machine curve is a new kind with its own axis(t) and omega. The kernel
-// (swept_move.cpp) assumes a linear tip today: linearTip() says whether a curve has
-// one; the joint-linear kind is refused before it reaches the kernel
-// (sweep/tool_path_sweep.h, unsweptMove) until the kernel uses the tip bounds.
+// A new machine curve is a new kind with its own axis(t), omega and, for a curved tip,
+// tipVelocity, tipAcceleration and the bounds: the kernel (swept_move.cpp,
+// ray_clearance.cpp) takes the tip's speed, acceleration and jerk into its bounds.
 #pragma once
 
 #include "sweep/pose.h"

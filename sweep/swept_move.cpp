@@ -97,12 +97,12 @@ constexpr int kLocateSteps = 8;  // step 5b's secant steps in the ends' bracket
 struct Sample {
   double t;
   Vec3 tip, axis;
-  double z;      // f(t), mm; +inf when l misses K(t)
-  Vec3 normal;   // unit, normal.z < 0; zero when no plane is known
-  double hOwn;   // support of K(t) - tip(t) in `normal` (every bound needs it)
-  double slope;  // df/dt where known, else NaN
+  double z;       // f(t), mm; +inf when l misses K(t)
+  Vec3 normal;    // unit, normal.z < 0; zero when no plane is known
+  double hOwn;    // support of K(t) - tip(t) in `normal` (every bound needs it)
+  double slope;   // df/dt where known, else NaN
   Vec3 vel, acc;  // d tip / dt and d^2 tip / dt^2 at t
-  Vec3 dn, ddn;  // d/dt and d2/dt2 of `normal` carried with the cutter (steps 2b, 2d)
+  Vec3 dn, ddn;   // d/dt and d2/dt2 of `normal` carried with the cutter (steps 2b, 2d)
 };
 
 // What step 2's bounds need of the tip's motion: where it is linear (CL data, TCP on),
@@ -209,9 +209,9 @@ double SweptMove::support(const Vec3& dir) const {
   a.t = 0, a.tip = curve_.tip(0), a.axis = curve_.axis(0);
   b.t = 1, b.tip = curve_.tip(1), b.axis = curve_.axis(1);
   const Vec3 N = dir / len;
-  const double h = supportOver(
-      cutter_, curve_.turnRate(), reach_, tipBoundsOf(curve_, tipSpeed_), a,
-      dot(N, cutterSupport(cutter_, a.axis, N)), b, dot(N, cutterSupport(cutter_, b.axis, N)), N);
+  const double h = supportOver(cutter_, curve_.turnRate(), reach_, tipBoundsOf(curve_, tipSpeed_),
+                               a, dot(N, cutterSupport(cutter_, a.axis, N)), b,
+                               dot(N, cutterSupport(cutter_, b.axis, N)), N);
   // Round-off of the few products above, scaled back to dir's length.
   return len * (h + 1e-12 * (1 + std::fabs(h)));
 }
@@ -317,7 +317,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   //   g'' = N''.(Q - tip) - 2 N'.tip' - N.tip'',  N'' = Omega' x N + Omega x (Omega x N),
   // and |g'''| <= omega^3 D + 3 omega^2 S + 3 omega A + J (|N^(k)| <= omega^k, D >=
   // |Q - tip|, S, A, J >= |tip'|, |tip''|, |tip'''|; A = J = 0 for a linear tip).
-  const double move = tipMotion.speed;  // bounds the tip's path length, mm
+  const double move = tipMotion.speed;    // bounds the tip's path length, mm
   auto thirdDerivative = [&](double D) {  // the bound of |g'''| above
     return omega * omega * omega * D + 3 * omega * omega * move + 3 * omega * accel + jerk;
   };
@@ -369,8 +369,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     const Vec3 q = Vec3{x, y, z} - from.tip;
     const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, from.vel);
     const double D = distanceBound(a, b, z, z);
-    const double m = dot(from.ddn, q) - 2 * dot(from.dn, from.vel) - dot(N, from.acc) -
-                     thirdDerivative(D) * w;
+    const double m =
+        dot(from.ddn, q) - 2 * dot(from.dn, from.vel) - dot(N, from.acc) - thirdDerivative(D) * w;
     const double ta = a.t - from.t, tb = b.t - from.t;
     double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
     if (m > 0 && -g1 / m > ta && -g1 / m < tb) low = std::min(low, g0 - 0.5 * g1 * g1 / m);
@@ -383,9 +383,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   // interval's own speed bound, |tip'(tc)| + A w / 2, is tighter than the move's.
   auto grownBound = [&](const Sample& a, const Sample& b) {
     const double tc = 0.5 * (a.t + b.t), w = b.t - a.t;
-    const double tipSpeed = tipMotion.linear
-                                ? move
-                                : std::min(move, length(curve_.tipVelocity(tc)) + 0.5 * accel * w);
+    const double tipSpeed =
+        tipMotion.linear ? move : std::min(move, length(curve_.tipVelocity(tc)) + 0.5 * accel * w);
     const double speed = tipSpeed + omega * reach_;
     const double grow = speed * 0.5 * w * (1 + 1e-12) + 1e-12;
     const Vec3 axis = curve_.axis(tc), tip = curve_.tip(tc) - axis * grow;

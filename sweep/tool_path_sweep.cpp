@@ -27,22 +27,7 @@ bool continues(const SweptMove& a, const Vec3& bStart, const Vec3& bEnd, const V
 
 }  // namespace
 
-size_t unsweptMove(const ToolPath& path) {
-  for (size_t k = 0; k < path.moves.size(); ++k) {
-    const Move& mv = path.moves[k];
-    if (mv.rapid || mv.rotary == 0) continue;
-    if (!PoseCurve::ofMove(path, mv).linearTip()) return k;
-  }
-  return path.moves.size();
-}
-
 std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path) {
-  const size_t refused = unsweptMove(path);
-  if (refused < path.moves.size())
-    throw InputError("path move " + std::to_string(refused + 1),
-                     "TCP off is not simulated yet: with TCP off the rotary axes move the tip "
-                     "along a curve (forward kinematics), which the exact kernel does not sweep "
-                     "yet; program it with TCP on");
   std::vector<SweptMove> out;
   for (size_t k = 0; k < path.moves.size(); ++k) {
     const Move& mv = path.moves[k];

@@ -16,19 +16,11 @@ namespace scallop {
 // linear and axis slerp(from.axis, to.axis, t), or the machine's rotary motion), swept
 // with cutters[move.tool]. Consecutive collinear moves with the same constant axis and
 // cutter are merged: the swept solid of their union is the same set. A turn of 180
-// degrees, a tool index beyond `cutters` and a move unsweptMove() names are
-// InputErrors naming the move.
+// degrees and a tool index beyond `cutters` are InputErrors naming the move.
 std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path);
 
 // The same with path.cutters when the path has its own (a multi-tool program), and
 // otherwise `cutter` for every move.
 std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path);
-
-// The index of the first cutting move that the swept-move kernel cannot sweep exactly
-// yet, or path.moves.size(): a machine move with TCP off whose angles change (its tip
-// follows the forward kinematics, not a line; PoseCurve::jointLinear). Readers name
-// the file line of such a move (tools/run/job_loader.cpp). Once swept_move.cpp bounds
-// the chord of a curved tip with PoseCurve::tipAccelBound, this check goes.
-size_t unsweptMove(const ToolPath& path);
 
 }  // namespace scallop

@@ -71,12 +71,13 @@ TEST(TcpOffSweep, JointLinearMovesAgreeWithBruteForce) {
       }
       ++hits;
       worst = std::max(worst, std::fabs(lp.z - r.z));
-      EXPECT_NEAR(lp.z, r.z, 1e-6) << "move " << k << " " << toString(type) << " (" << x << ", "
-                                   << y << ")";
+      EXPECT_NEAR(lp.z, r.z, 1e-6)
+          << "move " << k << " " << toString(type) << " (" << x << ", " << y << ")";
     }
   }
-  std::printf("TCP off: %d hits, %d misses, %d grazing skipped; worst |kernel - reference| = %.3g mm\n",
-              hits, misses, grazing, worst);
+  std::printf(
+      "TCP off: %d hits, %d misses, %d grazing skipped; worst |kernel - reference| = %.3g mm\n",
+      hits, misses, grazing, worst);
   EXPECT_GE(hits, 200);
   EXPECT_EQ(SweptMove::unprovenSearches(), unprovenBefore);
 }

@@ -62,8 +62,6 @@ TEST_F(BadInputMatrix, GcodePrograms) {
       program("no tool in the spindle", "G0 X0 Y0 Z1\nG1 X1\n", {"p.nc:2", "no tool"}),
       program("rotary word without a machine", kStart + "G1 X1 B5\n",
               {"p.nc:5", "rotary word B5", "\"machine\""}),
-      program("TCP off with turning rotaries", "G0 X0 Y0 Z1\nG1 X1 B10 C5\n",
-              {"p.nc:2", "TCP off is not simulated yet"}, kMachineJob),
       program("tilt below the horizontal", "G43.4\nG0 X0 Y0 Z1 B120\n",
               {"p.nc:2", "below the horizontal"}, kMachineJob),
       program("A on a BC machine", "G43.4\nG0 X0 Y0 Z1 A10\n", {"p.nc:2", "rotary word A"},

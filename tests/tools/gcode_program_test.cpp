@@ -285,7 +285,6 @@ TEST(GcodeProgram, TcpOnMovesAreTheRotaryPoseCurve) {
   // The next move keeps the angles: a constant axis, no rotary motion.
   EXPECT_EQ(f.path.moves[1].rotary, 0u);
   EXPECT_EQ(f.path.moves[1].from.axis, f.path.moves[1].to.axis);
-  EXPECT_EQ(unsweptMove(f.path), f.path.moves.size());
   // One move apart from the path (the design report's gouge finder) keeps its motion.
   const ToolPath one = f.path.single(0);
   const std::vector<SweptMove> swept = sweepToolPath(Cutter::make(CutterType::Ball, 1), one);
@@ -302,13 +301,15 @@ TEST(GcodeProgram, TcpOffMovesFollowTheForwardKinematics) {
   const double A = 15 * kPi / 180, C = 30 * kPi / 180;
   EXPECT_EQ(f.path.moves[0].to.tip, machineTip(m, {2, 0, 1}, A, C));
   EXPECT_EQ(f.path.moves[0].rotary, 0u);
-  // The angles change with TCP off: recorded, and the one move the sweep cannot do yet.
+  // The angles change with TCP off: the joints move linearly, the tip follows the forward
+  // kinematics along a curve (tests/sweep/tcp_off_sweep_test.cpp sweeps such moves).
   EXPECT_FALSE(f.path.rotary.at(0).tcp);
-  EXPECT_EQ(unsweptMove(f.path), 1u);
-  EXPECT_NE(inputErrorMessage([&] {
-              sweepToolPath(Cutter::make(CutterType::Ball, 1), f.path);
-            }).find("TCP off is not simulated yet"),
-            std::string::npos);
+  const PoseCurve curve = PoseCurve::ofMove(f.path, f.path.moves[1]);
+  EXPECT_FALSE(curve.linearTip());
+  EXPECT_EQ(curve.tip(0.5), machineTip(m, {2.5, 0, 1}, A, 35 * kPi / 180));
+  const std::vector<SweptMove> swept = sweepToolPath(Cutter::make(CutterType::Ball, 1), f.path);
+  ASSERT_EQ(swept.size(), 2u);
+  EXPECT_TRUE(swept[1].turning());
 }
 
 TEST(GcodeProgram, RotaryWordsNeedTheirMachine) {

@@ -54,12 +54,6 @@ void readPathFile(Job& job) {
                       "its CUTTER/ differs from the job's \"tool\"; the job's "
                       "tool is used");
   checkPathMagnitudes(read.path, read.moveLines, job.pathFile);
-  const size_t unswept = unsweptMove(read.path);
-  if (unswept < read.path.moves.size())
-    throw InputError(job.pathFile + ":" + std::to_string(read.moveLines[unswept]),
-                     "TCP off is not simulated yet: this move turns the rotary axes with TCP off, "
-                     "so the tip follows the machine's forward kinematics (a curve), which the "
-                     "exact kernel does not sweep yet; switch TCP on for it (machine.tcp_on)");
   warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile);
   job.path = std::move(read.path);
   job.moveLines = std::move(read.moveLines);
