@@ -26,7 +26,7 @@ if [ "$(id -u)" -ne 0 ]; then
   echo "slurm_bands_test: SKIPPED: needs root to start munged, slurmctld and slurmd (CI runs as root)"
   exit 77
 fi
-for prog in munged mungekey slurmctld slurmd sbatch scontrol scancel squeue iinfo; do
+for prog in munged mungekey slurmctld slurmd sbatch scontrol scancel squeue sinfo iinfo; do
   command -v "$prog" >/dev/null 2>&1 || {
     echo "slurm_bands_test: FAIL: '$prog' is missing: run scripts/install-deps.sh (slurm-wlm, munge)"
     exit 1
@@ -63,7 +63,10 @@ cleanup() {
     kill -KILL "$pid" 2>/dev/null
   done
   # Job steps that outlived slurmd (none expected): found by this test's folder.
-  for pid in $(pgrep -f -- "$tmp" 2>/dev/null); do kill -KILL "$pid" 2>/dev/null; done
+  for pid in $(grep -lzF -- "$tmp/" /proc/[0-9]*/cmdline 2>/dev/null); do
+    pid=${pid#/proc/}
+    kill -KILL "${pid%/cmdline}" 2>/dev/null
+  done
   if [ "$failures" -gt 0 ]; then
     for log in "$tmp"/*.log; do
       [ -f "$log" ] && { echo "--- $log (tail)"; tail -n 20 "$log"; }
@@ -72,15 +75,32 @@ cleanup() {
   rm -rf "$tmp"
 }
 trap cleanup EXIT
+test_start=$SECONDS
 trap 'exit 1' INT TERM HUP
 
+# A TCP port no socket of this machine uses now (/proc/net/tcp*: no iproute2 needed).
 free_port() {
   local p
   for _ in $(seq 100); do
     p=$((20000 + RANDOM % 40000))
-    [ -z "$(ss -Htan "( sport = :$p )" 2>/dev/null)" ] && { echo "$p"; return 0; }
+    if ! grep -qi ":$(printf %04X "$p") " /proc/net/tcp /proc/net/tcp6 2>/dev/null; then
+      echo "$p"
+      return 0
+    fi
   done
   return 1
+}
+# The processes with an argument equal to each of ARGS (/proc: no procps needed).
+pids_with() {
+  local f pid arg ok
+  for f in $(grep -lxzF -- "$1" /proc/[0-9]*/cmdline 2>/dev/null); do
+    pid=${f#/proc/}
+    pid=${pid%/cmdline}
+    [ "$pid" = "$$" ] && continue
+    ok=1
+    for arg in "$@"; do grep -qxzF -- "$arg" "$f" 2>/dev/null || ok=0; done
+    [ $ok -eq 1 ] && echo "$pid"
+  done
 }
 
 # --- munge: the running one, or our own with its own key.
@@ -139,9 +159,10 @@ slurmctld -D -f "$SLURM_CONF" >"$tmp/slurmctld.out.log" 2>&1 &
 pids="$pids $!"
 slurmd -D -f "$SLURM_CONF" -N "$host" >"$tmp/slurmd.out.log" 2>&1 &
 pids="$pids $!"
+start=$SECONDS
 node_idle() { sinfo --noheader --nodes="$host" --format=%t | grep -qx idle; }
 wait_for 60 "slurmctld and slurmd (node $host idle)" node_idle || exit 1
-note "one-node Slurm up: $host, $cpus CPUs, slurmctld port $ctld_port"
+note "one-node Slurm up in $((SECONDS - start)) s: $host, $cpus CPUs, slurmctld port $ctld_port"
 
 # --- The job: the default job at 0.003 mm, 6667 x 6667 cells; --tile-rows 1792 makes
 # 4 bands (3 of 1792 rows, one of 1291), each computed in about a second or two.
@@ -153,11 +174,13 @@ layout=$("$scallop" simulate "$job" --print-bands --tile-rows $rows)
   fail "the test job's layout is '$layout', expected 4 bands of 1792 rows"
 export SCALLOP=$scallop
 
+start=$SECONDS
 "$scallop" simulate "$job" -o "$tmp/single" --threads "$cpus" >/dev/null 2>"$tmp/single.log" ||
   fail "the single in-memory run failed"
 "$scallop" simulate "$job" -o "$tmp/oneprocess" --tile-rows $rows --bands 0:4 >/dev/null \
   2>"$tmp/oneprocess.log" || fail "the single-process band run failed"
 
+note "the single runs took $((SECONDS - start)) s"
 pixels() { iinfo --hash "$1" | sed -n 's/.*SHA-1: *//p'; }
 # same_map DIR: DIR's merged outputs and band files are the single runs' bits.
 same_map() {
@@ -191,7 +214,7 @@ fi
 out=$tmp/killed
 timeout 150 "$script" "$job" "$out" 4 --tile-rows $rows --wait >"$tmp/killed.log" 2>&1 &
 waiter=$!
-task_pid() { pgrep -f -- "simulate $job -o $out --tile-rows $rows --bands 2:3" | head -n 1; }
+task_pid() { pids_with "$out" "$scallop" 2:3 | head -n 1; }
 victim=""
 start=$SECONDS
 while [ -z "$victim" ] && [ $((SECONDS - start)) -lt 90 ]; do
@@ -206,6 +229,7 @@ else
 fi
 wait "$waiter"
 status=$?
+note "the script saw the failure $((SECONDS - start)) s after the submission"
 [ $status -eq 1 ] || fail "slurm-bands.sh --wait exited $status after a killed task, expected 1"
 grep -q "tasks with missing bands: 2 " "$tmp/killed.log" ||
   fail "the script did not name task 2: $(cat "$tmp/killed.log")"
@@ -221,11 +245,13 @@ case $merge_err in
   *) fail "merge did not name band 2 and its command: $merge_err" ;;
 esac
 [ ! -e "$out/heights.exr" ] || fail "merge left heights.exr with band 2 missing"
+start=$SECONDS
 timeout 120 "$script" "$job" "$out" 4 --tile-rows $rows --tasks 2 --wait >"$tmp/rerun.log" 2>&1
 status=$?
 if [ $status -ne 0 ]; then
   fail "rerunning task 2 exited $status: $(cat "$tmp/rerun.log")"
 else
+  note "task 2 rerun and merged in $((SECONDS - start)) s"
   same_map "$out"
   [ "$(ls "$out"/slurm-*_2.out | wc -l)" -eq 2 ] || fail "expected task 2 to have run twice"
 fi
@@ -244,4 +270,4 @@ if [ "$failures" -gt 0 ]; then
   echo "slurm_bands_test: $failures failure(s)"
   exit 1
 fi
-note "passed"
+note "passed in $((SECONDS - test_start)) s"
