@@ -84,12 +84,24 @@ line=$(layout "$tile_rows")
 bands=$(printf '%s\n' "$line" | sed -n 's/.*bands=\([0-9]*\) .*/\1/p')
 rows=$(printf '%s\n' "$line" | sed -n 's/.* rows=\([0-9]*\) .*/\1/p')
 if [ -z "$tile_rows" ]; then
-  tile_rows=$(printf '%s\n' "$line" | sed -n 's/.*band_rows=\([0-9]*\) .*/\1/p')
-  if [ "$bands" -lt "$ntasks" ] && [ "$rows" -ge "$ntasks" ]; then
-    tile_rows=$(((rows + ntasks - 1) / ntasks))
+  # Even shares: k bands per task for the smallest k whose bands are no larger than the
+  # default ones (whole 256-row EXR tiles above 256 rows); smaller bands if the
+  # rounding left fewer bands than tasks.
+  default_rows=$(printf '%s\n' "$line" | sed -n 's/.*band_rows=\([0-9]*\) .*/\1/p')
+  k=1
+  while :; do
+    share=$(((rows + ntasks * k - 1) / (ntasks * k)))
+    [ "$share" -le 256 ] || share=$(((share + 255) / 256 * 256))
+    effective=$share
+    [ "$effective" -le "$rows" ] || effective=$rows
+    [ "$effective" -gt "$default_rows" ] || break
+    k=$((k + 1))
+  done
+  for tile_rows in "$share" $(((rows + ntasks - 1) / ntasks)); do
     line=$(layout "$tile_rows")
     bands=$(printf '%s\n' "$line" | sed -n 's/.*bands=\([0-9]*\) .*/\1/p')
-  fi
+    [ "$bands" -lt "$ntasks" ] || break
+  done
 fi
 [ "$bands" -ge "$ntasks" ] ||
   usage "NTASKS $ntasks is more than the job's $bands bands ($rows rows, --tile-rows $tile_rows)"
@@ -114,13 +126,21 @@ i=\$SLURM_ARRAY_TASK_ID n=$ntasks b=$bands
 k=\$((i * b / n)) m=\$(((i + 1) * b / n))
 threads=\${SLURM_CPUS_PER_TASK:-\${SLURM_CPUS_ON_NODE:-1}}
 echo "slurm-bands: task \$i of \$n: bands \$k..\$((m - 1)) of \$b, \$threads threads, on \$(hostname)"
-exec $(quote "$scallop") simulate $(quote "$job") -o $(quote "$outdir") --tile-rows $tile_rows --bands "\$k:\$m" --threads "\$threads"
+start=\$(date +%s)
+status=0
+$(quote "$scallop") simulate $(quote "$job") -o $(quote "$outdir") --tile-rows $tile_rows --bands "\$k:\$m" --threads "\$threads" || status=\$?
+echo "slurm-bands: task \$i: exit status \$status after \$((\$(date +%s) - start)) s"
+exit \$status
 EOF
 }
 merge_script() {
   cat <<EOF
 #!/bin/sh
-exec $(quote "$scallop") merge $(quote "$outdir")
+start=\$(date +%s)
+status=0
+$(quote "$scallop") merge $(quote "$outdir") || status=\$?
+echo "slurm-bands: merge: exit status \$status after \$((\$(date +%s) - start)) s"
+exit \$status
 EOF
 }
 
