@@ -116,6 +116,13 @@ TEST_F(Collect, ColumnsChooseTheMeasurements) {
   EXPECT_EQ(h[h.size() - 1], "measurements.floor_z");
   for (const char* c : {"timings_s.scene_build", "timings_s.cast", "timings_s.total"}) column(h, c);
   for (const std::string& c : h) EXPECT_NE(c, "measurements.min_height");
+  // --columns takes one argument: folders after it stay folders.
+  const CliRun before = run("collect --columns grid.nx " + path("s2") + " " + path("s2"));
+  ASSERT_EQ(before.status, 0) << before.err;
+  const auto twice = parseCsv(before.out);
+  ASSERT_EQ(twice.size(), 3u);
+  EXPECT_EQ(twice[0].back(), "grid.nx");
+  EXPECT_EQ(twice[2][0], path("s2"));
   const CliRun bad = run("collect " + path("s2") + " --columns measurements.nothing");
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.err.find("measurements.nothing"), std::string::npos) << bad.err;

@@ -166,6 +166,7 @@ int runCollect(const CollectArgs& args) {
 
 Command addCollectCommand(CLI::App& parent, CommonOptions&) {
   auto args = std::make_shared<CollectArgs>();
+  auto columnsText = std::make_shared<std::string>();
   CLI::App* app = parent.add_subcommand(
       "collect",
       "Gather the report.json files of many runs (a parameter study: one output folder\n"
@@ -178,14 +179,26 @@ Command addCollectCommand(CLI::App& parent, CommonOptions&) {
       ->required();
   app->add_option("-o,--output", args->output,
                   "CSV file to write (atomically); default: the table on stdout");
-  app->add_option("--columns", args->columns,
+  app->add_option("--columns", *columnsText,
                   "Comma-separated report.json paths to put after the inputs; an object gives\n"
                   "all its leaves (e.g. measurements,surface_stats.Sq_mm,timings_s.total).\n"
                   "Default: measurements min/max_height, max_scallop_height, floor_z,\n"
                   "exact_evaluations_per_cell, surface_stats Sa/Sq/Sz_mm, grid.nx/ny, threads,\n"
-                  "timings_s.total (those some report has)")
-      ->delimiter(',');
-  return {app, [args]() { return runCollect(*args); }};
+                  "timings_s.total (those some report has)");
+  return {app, [args, columnsText]() {
+            // One argument, split at commas, so that DIRs after it stay DIRs.
+            std::string column;
+            for (const char c : *columnsText + ",")
+              if (c != ',') {
+                column += c;
+              } else if (!column.empty()) {
+                args->columns.push_back(column);
+                column.clear();
+              }
+            if (!columnsText->empty() && args->columns.empty())
+              throw InputError("--columns", "'" + *columnsText + "': expected report.json paths");
+            return runCollect(*args);
+          }};
 }
 
 }  // namespace scallop
