@@ -97,7 +97,7 @@ TEST_F(Tiled, MergeNamesAMissingBandAndWritesNothing) {
   simulate("split", "--tile-rows 32 --bands 5:10");
   const CliRun m = run("merge " + path("split"));
   EXPECT_EQ(m.status, 1);
-  EXPECT_NE(m.err.find("band-4.raw"), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("band-4.json"), std::string::npos) << m.err;
   EXPECT_NE(m.err.find("--bands 4:5"), std::string::npos) << m.err;
   for (const char* f : {"heights.exr", "heights.gsf", "preview.png", "report.json"})
     EXPECT_FALSE(fs::exists(path("split") + "/" + f)) << f;

@@ -33,5 +33,6 @@ Command addBenchCommand(CLI::App& parent, CommonOptions& common);
 Command addMergeCommand(CLI::App& parent, CommonOptions& common);
 Command addStatsCommand(CLI::App& parent, CommonOptions& common);
 Command addExportCommand(CLI::App& parent, CommonOptions& common);
+Command addCollectCommand(CLI::App& parent, CommonOptions& common);
 
 }  // namespace scallop

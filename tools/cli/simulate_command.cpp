@@ -13,6 +13,7 @@
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"
 #include "tools/run/report.h"
+#include "tools/run/tiled_simulation.h"
 
 namespace scallop {
 
@@ -54,18 +55,43 @@ void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
               (dir / "report.json").c_str());
 }
 
-}  // namespace
-
-int runSimulate(const SimulateArgs& args) {
-  const RunSettings& run = args.run;
+Job loadSimulateJob(const SimulateArgs& args) {
   if (!args.pathFile.empty() && args.jobFile.empty())
     throw InputError("--path",
                      "needs a JOB file for the tool (unless the path has CUTTER/), "
                      "stock and grid");
   // A grid too large to hold is accepted here: the run computes it in bands.
-  const bool exact = run.method == "exact";
-  const Job job = args.jobFile.empty() ? loadJob(defaultJobJson(), "built-in default job", !exact)
-                                       : loadJobFile(args.jobFile, !exact, args.pathFile);
+  const bool exact = args.run.method == "exact";
+  return args.jobFile.empty() ? loadJob(defaultJobJson(), "built-in default job", !exact)
+                              : loadJobFile(args.jobFile, !exact, args.pathFile);
+}
+
+// --print-bands: the band layout the job and --tile-rows give, without computing, so
+// that a scheduler script can split the bands between its tasks (scripts/slurm-bands.sh).
+int printBands(const SimulateArgs& args) {
+  const Job job = loadSimulateJob(args);
+  const GridSpec grid = job.grid();
+  const BandLayout layout = bandLayout(grid, args.run.tileRows);
+  const json doc = {{"bands", layout.bands},
+                    {"band_rows", layout.bandRows},
+                    {"rows", grid.ny},
+                    {"columns", grid.nx},
+                    {"exr_tile_rows", layout.tileHeight}};
+  if (args.run.quiet) {
+    std::fputs((doc.dump(2) + "\n").c_str(), stdout);
+  } else {
+    std::printf("bands=%lld band_rows=%lld rows=%lld columns=%lld exr_tile_rows=%d\n",
+                (long long)layout.bands, (long long)layout.bandRows, (long long)grid.ny,
+                (long long)grid.nx, layout.tileHeight);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int runSimulate(const SimulateArgs& args) {
+  const RunSettings& run = args.run;
+  const Job job = loadSimulateJob(args);
   ProgressBar bar("simulating");
   RunSettings settings = run;
   settings.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
@@ -103,6 +129,7 @@ constexpr const char* kSimulateHelp =
 Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
   auto args = std::make_shared<SimulateArgs>();
   auto printDefault = std::make_shared<bool>(false);
+  auto printBandLayout = std::make_shared<bool>(false);
   CLI::App* app = parent.add_subcommand("simulate", kSimulateHelp);
   app->add_option("JOB", args->jobFile, "Job file (JSON); omit for the built-in default job");
   app->add_option("-o,--output", args->run.outDir,
@@ -124,16 +151,24 @@ Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
   app->add_option("--tile-rows", args->run.tileRows,
                   "Rows per band (default: bands of <= 256 MB of heights); implies --tiled")
       ->check(CLI::PositiveNumber);
-  app->add_option("--bands", args->run.bands,
-                  "K:M: compute only bands K..M-1 and write DIR/band-K.raw (float64 mm) and\n"
-                  "DIR/band-K.json; `scallop merge DIR` assembles the outputs when all exist");
+  CLI::Option* bands =
+      app->add_option("--bands", args->run.bands,
+                      "K:M: compute only bands K..M-1 and write DIR/band-K.raw (float64 mm) and\n"
+                      "DIR/band-K.json (written last, with the .raw's MD5: the band is complete\n"
+                      "only then); `scallop merge DIR` assembles the outputs when all exist");
+  app->add_flag("--print-bands", *printBandLayout,
+                "Print the band layout of JOB with --tile-rows and exit, computing nothing:\n"
+                "one line 'bands=B band_rows=R rows=NY columns=NX exr_tile_rows=T' (with\n"
+                "--json, a JSON object); --bands K:M then takes 0 <= K < M <= B")
+      ->excludes(bands);
   app->add_flag("--print-default-job", *printDefault,
                 "Print the built-in default job file and exit");
-  return {app, [args, printDefault, &common]() {
+  return {app, [args, printDefault, printBandLayout, &common]() {
             if (*printDefault) {
               std::puts(defaultJobJson());
               return 0;
             }
+            if (*printBandLayout) return printBands(*args);
             args->run.threads = common.threads;
             return runSimulate(*args);
           }};

@@ -1,11 +1,7 @@
-// Tiled simulation (tiled_simulation.h) and the band files of `simulate --bands`.
-//
-// Band file DIR/band-K.raw: the band's heights, mm, as native little-endian float64 in
-// ZMap order (row j = 0 is the band's smallest y), nx values a row. DIR/band-K.json is
-// written after it (both atomically), so a .json always names a complete .raw:
-//   {"format": "scallop band 1", "run": {...}, "band": K, "stats": {...}}
-// "run" is identical in every band of one run (job echo, grid, layout, scene stats);
-// merge refuses bands whose "run" differs.
+// Tiled simulation (tiled_simulation.h); `simulate --bands` writes band files
+// (band_files.h) whose "run" description is identical in every band of one run (scallop
+// version, job echo, grid, layout, scene stats), and merge refuses bands whose
+// fingerprint of it differs.
 #include "tools/run/tiled_simulation.h"
 
 #include <fmt/core.h>
@@ -22,7 +18,10 @@
 #include "sweep/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
+#include "tools/io/md5.h"
+#include "tools/io/version.h"
 #include "tools/render/preview_png.h"
+#include "tools/run/band_files.h"
 #include "tools/run/memory_limits.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
@@ -52,16 +51,15 @@ std::pair<int64_t, int64_t> parseBands(const std::string& text, const BandLayout
   return {k, m};
 }
 
-void writeBandFiles(const std::string& dir, int64_t band, const ZMap& map, const json& run,
-                    const json& stats) {
-  const std::string raw = (fs::path(dir) / fmt::format("band-{}.raw", band)).string();
-  writeStreamAtomically(raw, "the band", [&](std::ostream& out) {
-    out.write(reinterpret_cast<const char*>(map.heights().data()),
-              std::streamsize(map.heights().size() * sizeof(double)));
-  });
-  const std::string side = (fs::path(dir) / fmt::format("band-{}.json", band)).string();
-  const json doc = {{"format", "scallop band 1"}, {"run", run}, {"band", band}, {"stats", stats}};
-  writeTextAtomically(side, doc.dump(1) + "\n", "the band description");
+// The MD5 of a tool-path file, so that bands of one job agree on its content too.
+std::string fileMd5(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot read the tool-path file");
+  Md5 md5;
+  std::vector<char> chunk(1 << 20);
+  while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0)
+    md5.update(chunk.data(), size_t(in.gcount()));
+  return md5.hexDigest();
 }
 
 }  // namespace
@@ -130,16 +128,18 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
   const SceneStats sceneStats = scene->stats();
 
   // Everything a band file must agree on with the other bands of its run.
-  const json run = {{"job_source", job.source},
-                    {"inputs", jobToJson(job)},
-                    {"title", simulationTitle(job)},
-                    {"grid", gridToJson(grid)},
-                    {"band_rows", layout.bandRows},
-                    {"bands", layout.bands},
-                    {"exr_tile_rows", layout.tileHeight},
-                    {"cutting_moves", job.path.cuttingMoves()},
-                    {"swept_segments", sceneStats.segments},
-                    {"culling_tiles", sceneStats.tiles}};
+  json run = {{"scallop_version", kScallopVersion},
+              {"job_source", job.source},
+              {"inputs", jobToJson(job)},
+              {"title", simulationTitle(job)},
+              {"grid", gridToJson(grid)},
+              {"band_rows", layout.bandRows},
+              {"bands", layout.bands},
+              {"exr_tile_rows", layout.tileHeight},
+              {"cutting_moves", job.path.cuttingMoves()},
+              {"swept_segments", sceneStats.segments},
+              {"culling_tiles", sceneStats.tiles}};
+  if (!job.isRaster && partial) run["path_file_md5"] = fileMd5(job.pathFile);
   std::unique_ptr<TiledOutput> output;
   if (!partial) {
     output = std::make_unique<TiledOutput>(run, settings.outDir);
@@ -169,7 +169,7 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
     if (output) {
       output->add(band, stats);
     } else {
-      writeBandFiles(settings.outDir, b, band, run, stats);
+      writeBandFiles(settings.outDir, b, band, run, settings.tileRows, stats);
       written.push_back(fmt::format("band-{}.raw", b));
     }
   }

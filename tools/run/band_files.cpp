@@ -1,0 +1,139 @@
+// Band files (band_files.h): written by `simulate --bands`, checked and read by merge.
+#include "tools/run/band_files.h"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "sweep/input_error.h"
+#include "tools/io/atomic_file.h"
+#include "tools/io/md5.h"
+
+namespace scallop {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFormat = "scallop band 2";
+
+std::string heightsMd5(const ZMap& map) {
+  Md5 md5;
+  md5.update(map.heights().data(), map.heights().size() * sizeof(double));
+  return md5.hexDigest();
+}
+
+}  // namespace
+
+std::string runFingerprint(const json& run) {
+  json key = run;
+  key.erase("job_source");
+  return md5Hex(key.dump());
+}
+
+std::string bandRawPath(const std::string& dir, int64_t band) {
+  return (fs::path(dir) / fmt::format("band-{}.raw", band)).string();
+}
+
+std::string bandDescriptionPath(const std::string& dir, int64_t band) {
+  return (fs::path(dir) / fmt::format("band-{}.json", band)).string();
+}
+
+void writeBandFiles(const std::string& dir, int64_t band, const ZMap& map, const json& run,
+                    int64_t tileRows, const json& stats) {
+  const std::string raw = bandRawPath(dir, band), side = bandDescriptionPath(dir, band);
+  // The old description goes first: from here on the band is missing until it is whole.
+  std::error_code ignored;
+  fs::remove(side, ignored);
+  const size_t bytes = map.heights().size() * sizeof(double);
+  writeStreamAtomically(raw, "the band", [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(map.heights().data()), std::streamsize(bytes));
+  });
+  const json doc = {
+      {"format", kFormat},
+      {"fingerprint", runFingerprint(run)},
+      {"run", run},
+      {"band", band},
+      {"tile_rows", tileRows},
+      {"raw",
+       {{"file", fs::path(raw).filename().string()}, {"bytes", bytes}, {"md5", heightsMd5(map)}}},
+      {"stats", stats}};
+  writeTextAtomically(side, doc.dump(1) + "\n", "the band description");
+}
+
+json readBandDescription(const std::string& path, int64_t band) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open the band description");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::exception& e) {
+    throw InputError(path,
+                     std::string("damaged band description (compute the band again): ") + e.what());
+  }
+  if (!doc.is_object() || !doc.contains("format") || !doc["format"].is_string())
+    throw InputError(path, fmt::format("not a scallop band description (format '{}')", kFormat));
+  if (doc["format"] != kFormat)
+    throw InputError(path, fmt::format("band format '{}', expected '{}' (written by another "
+                                       "scallop version; compute the band again)",
+                                       doc["format"].get<std::string>(), kFormat));
+  try {
+    const bool complete = doc.at("run").is_object() && doc.at("fingerprint").is_string() &&
+                          doc.at("raw").at("md5").is_string() &&
+                          doc.at("raw").at("bytes").is_number_unsigned() &&
+                          doc.at("stats").is_object();
+    if (!complete) throw InputError(path, "damaged band description: a field has the wrong type");
+    if (doc.at("band").get<int64_t>() != band)
+      throw InputError(path, fmt::format("describes band {}, expected band {} (renamed?)",
+                                         doc["band"].get<int64_t>(), band));
+  } catch (const json::exception& e) {
+    throw InputError(path, std::string("damaged band description: ") + e.what());
+  }
+  return doc;
+}
+
+void checkBandRawSize(const std::string& dir, int64_t band, const json& description) {
+  const std::string raw = bandRawPath(dir, band);
+  const uintmax_t expected = description["raw"]["bytes"].get<uintmax_t>();
+  std::error_code error;
+  const uintmax_t size = fs::file_size(raw, error);
+  if (error)
+    throw InputError(raw, fmt::format("missing: the band's heights are not there ({}); {}",
+                                      error.message(), bandCommand(dir, band, description)));
+  if (size != expected)
+    throw InputError(raw, fmt::format("partial or damaged: {} bytes, band-{}.json expects {}; {}",
+                                      size, band, expected, bandCommand(dir, band, description)));
+}
+
+void readBandRaw(const std::string& dir, int64_t band, const json& description, ZMap& map) {
+  const std::string raw = bandRawPath(dir, band);
+  const std::streamsize bytes = std::streamsize(map.heights().size() * sizeof(double));
+  if (uintmax_t(bytes) != description["raw"]["bytes"].get<uintmax_t>())
+    throw InputError(bandDescriptionPath(dir, band),
+                     fmt::format("records {} bytes for a band of {} x {} float64 heights",
+                                 description["raw"]["bytes"].get<uintmax_t>(), map.nx(), map.ny()));
+  std::ifstream in(raw, std::ios::binary);
+  if (!in) throw InputError(raw, "cannot open the band's heights");
+  in.read(reinterpret_cast<char*>(map.heights().data()), bytes);
+  if (in.gcount() != bytes || in.peek() != std::char_traits<char>::eof())
+    throw InputError(raw, fmt::format("partial or damaged: expected {} bytes; {}", bytes,
+                                      bandCommand(dir, band, description)));
+  const std::string md5 = heightsMd5(map), expected = description["raw"]["md5"];
+  if (md5 != expected)
+    throw InputError(raw, fmt::format("corrupt: MD5 {}, band-{}.json records {}; {}", md5, band,
+                                      expected, bandCommand(dir, band, description)));
+}
+
+std::string bandCommand(const std::string& dir, int64_t band, const json& description) {
+  const json& run = description.at("run");
+  const std::string source = run.value("job_source", "");
+  const int64_t tileRows = description.value("tile_rows", int64_t(0));
+  return fmt::format("compute it again with `scallop simulate {}-o {}{} --bands {}:{}`",
+                     source == "built-in default job" || source.empty() ? "" : source + " ", dir,
+                     tileRows > 0 ? fmt::format(" --tile-rows {}", tileRows) : "", band, band + 1);
+}
+
+}  // namespace scallop
