@@ -60,6 +60,47 @@ def test_write_x3p_holds_the_heights_in_metres(tmp_path, result):
     assert np.array_equal(stored, result.heights[::-1] * 1e-3)
 
 
+def test_x3p_round_trip(tmp_path, result):
+    path = str(tmp_path / "h.x3p")
+    scallop.write_heights(path, result.heights, result.grid)
+    back, grid = scallop.read_heights(path)
+    # float64 metres: back in mm is exactly (h * 1e-3) * 1e3.
+    assert np.array_equal(back, (result.heights * 1e-3) * 1e3)
+    assert (grid.nx, grid.ny) == (result.grid.nx, result.grid.ny)
+    assert grid.spacing == pytest.approx(result.grid.spacing, rel=1e-15)
+    assert grid.origin == pytest.approx(result.grid.origin, abs=1e-12)
+
+
+def rewrite_x3p(src, dst, change):
+    """Copies the X3P archive `src` to `dst`, members passed through change(name, bytes)."""
+    with zipfile.ZipFile(src) as z, zipfile.ZipFile(dst, "w") as out:
+        for name in z.namelist():
+            data = change(name, z.read(name))
+            if data is not None:
+                out.writestr(name, data)
+
+
+@pytest.mark.parametrize("change,message", [
+    (lambda n, d: None if n == "main.xml" else d, "no main.xml in the X3P archive"),
+    (lambda n, d: d[:-8] if n == "bindata/data.bin" else d, "bindata/data.bin is"),
+    (lambda n, d: d[:-8] + d[-8:][::-1] if n == "bindata/data.bin" else d,
+     "does not match main.xml's MD5ChecksumPointData"),
+    (lambda n, d: d.replace(b"<SizeX>", b"<SizeX>x") if n == "main.xml" else d, "SizeX is"),
+    (lambda n, d: d.replace(b"<FeatureType>SUR", b"<FeatureType>PRF") if n == "main.xml" else d,
+     "FeatureType is not SUR"),
+])
+def test_a_damaged_x3p_is_refused_naming_what_is_wrong(tmp_path, result, change, message):
+    good = tmp_path / "good.x3p"
+    scallop.write_heights(str(good), result.heights, result.grid)
+    bad = tmp_path / "bad.x3p"
+    rewrite_x3p(good, bad, change)
+    with pytest.raises(scallop.InputError, match="bad.x3p: .*" + message.replace(".", r"\.")):
+        scallop.read_heights(str(bad))
+    (tmp_path / "not_zip.x3p").write_bytes(b"PK but not really")
+    with pytest.raises(scallop.InputError, match="not_zip.x3p: cannot open the X3P"):
+        scallop.read_heights(str(tmp_path / "not_zip.x3p"))
+
+
 def test_write_heights_accepts_any_real_array_and_a_grid_dict(tmp_path):
     h = np.arange(12, dtype=np.int32).reshape(3, 4)
     path = str(tmp_path / "i.exr")

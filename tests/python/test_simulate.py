@@ -2,6 +2,7 @@
 jobs, threads, progress and Ctrl-C."""
 import gc
 import json
+import math
 import signal
 import threading
 import time
@@ -151,7 +152,7 @@ def test_a_bad_job_raises_input_error_naming_the_field_as_the_cli(tmp_path, monk
     with pytest.raises(scallop.InputError) as from_dict:
         scallop.simulate(job)
     with pytest.raises(scallop.InputError) as from_file:
-        scallop.simulate(str(job_file))
+        scallop.simulate(job_file.name)  # as the CLI below is given it
     assert field in str(from_dict.value) and field in str(from_file.value)
     assert str(from_dict.value).startswith("job: ")
     assert isinstance(from_dict.value, ValueError)
@@ -205,12 +206,23 @@ def test_progress_reports_cells_up_to_the_total():
     assert calls[-1] == (total, total)
 
 
-def long_job():
-    """A run of several seconds on two cores (measured ~4 s on the CI machine)."""
-    return bull_job(spacing=0.004)
+@pytest.fixture
+def long_job(tmp_path):
+    """A 5-axis run of ~10 s on two cores (300 000 cells under 450 turning moves, ~6
+    exact evaluations a cell): long enough that an interrupt clearly cuts it short."""
+    lines = []
+    for k in range(11):
+        for n in range(41):
+            a = math.radians(15 * math.sin(0.7 * n + k))
+            lines.append(f"{-4 + 0.5 * n:.4f} {k:.4f} -0.3 0 {math.sin(a):.6f} {math.cos(a):.6f}")
+    path = tmp_path / "turning.txt"
+    path.write_text("\n".join(lines) + "\n")
+    return {"tool": {"type": "bull", "radius": 3, "corner_radius": 1},
+            "stock": {"min": [0, 0, -5], "max": [12, 10, 0]}, "grid": {"spacing": 0.02},
+            "path": {"file": str(path)}}
 
 
-def test_an_exception_from_progress_stops_the_run():
+def test_an_exception_from_progress_stops_the_run(long_job):
     calls = []
 
     def progress(done, total):
@@ -219,21 +231,21 @@ def test_an_exception_from_progress_stops_the_run():
             raise KeyboardInterrupt
 
     with pytest.raises(KeyboardInterrupt):
-        scallop.simulate(long_job(), progress=progress)
+        scallop.simulate(long_job, progress=progress)
     assert len(calls) == 3  # no call after the one that raised
 
     with pytest.raises(ZeroDivisionError):
         scallop.simulate(ball_job(), progress=lambda d, t: 1 / 0)
 
 
-def test_ctrl_c_stops_a_long_run_promptly():
+def test_ctrl_c_stops_a_long_run_promptly(long_job):
     seen = []
     timer = threading.Timer(0.5, signal.raise_signal, [signal.SIGINT])
     start = time.monotonic()
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
-            scallop.simulate(long_job(), progress=lambda d, t: seen.append((d, t)))
+            scallop.simulate(long_job, progress=lambda d, t: seen.append((d, t)))
     finally:
         timer.cancel()
     elapsed = time.monotonic() - start

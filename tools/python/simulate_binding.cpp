@@ -36,6 +36,8 @@ class PythonProgress {
 
   // Any thread, serialised by the caster, without the GIL.
   void operator()(int64_t done, int64_t total) {
+    // Tiles that other threads finish while the cancellation spreads call in vain.
+    if (error_) throw PythonCancel();
     const Clock::time_point now = Clock::now();
     const bool poll = std::this_thread::get_id() == mainThread_ && now - lastPoll_ >= kPollEvery;
     const bool report = !callback_.is_none() && (done == total || now - lastReport_ >= kReportEvery);
