@@ -256,3 +256,28 @@ def test_ctrl_c_stops_a_long_run_promptly(long_job):
     assert elapsed < 5.0
     # The module still works after an interrupted run.
     assert scallop.simulate(ball_job()).heights.size > 0
+
+
+# --- A job with a design surface ------------------------------------------------------
+
+def test_a_design_job_reports_the_cli_comparison_without_its_picture(tmp_path, cli):
+    # The design: a plane 0.35 mm below the stock top; the 0.4 mm deep raster gouges it.
+    (tmp_path / "plane.stl").write_text(
+        "solid plane\n"
+        "facet normal 0 0 1\nouter loop\nvertex -1 -1 -0.35\nvertex 7 -1 -0.35\n"
+        "vertex 7 6 -0.35\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex -1 -1 -0.35\nvertex 7 6 -0.35\n"
+        "vertex -1 6 -0.35\nendloop\nendfacet\nendsolid plane\n")
+    job = ball_job()
+    job["design"] = {"stl": "plane.stl", "gouge_tolerance": 0.01}
+    job_file = write_job(tmp_path, job)
+    cli("simulate", job_file, "-o", tmp_path / "out", "--json")
+    written = json.loads((tmp_path / "out" / "report.json").read_text())["design"]
+
+    before = sorted(p.name for p in tmp_path.iterdir())
+    got = scallop.simulate(str(job_file)).report["design"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == before  # no deviation.png
+    assert written.pop("image") == "deviation.png"
+    del written["image_colour_range_mm"]
+    assert got == written
+    assert got["gouges"]["count"] > 0 and got["overcut"]["max_depth_mm"] > 0.04

@@ -21,8 +21,8 @@ namespace py = pybind11;
 namespace {
 
 // Errors name the keywords, as the CLI's name its options.
-constexpr IntervalFieldNames kKeywords{"tool", "radius", "corner_radius", "lead", "tilt",
-                                       "scallop"};
+constexpr IntervalFieldNames kKeywords{"tool", "radius", "corner_radius",
+                                       "lead", "tilt",   "scallop"};
 
 py::object interval(const std::string& tool, double radius, double scallop,
                     std::optional<double> cornerRadius, double lead, double tilt) {
@@ -66,7 +66,8 @@ py::object stats(const py::handle& heights, const py::handle& spacing,
                                             "nx = {} cells",
                                             map.ny(), map.nx(), gridNy, gridNx));
   const Levelling levelling = parseLevelling(level, "level");
-  const CellRegion cells = statsRegion(map.grid(), region.value_or(std::vector<double>()), "region");
+  const CellRegion cells =
+      statsRegion(map.grid(), region.value_or(std::vector<double>()), "region");
   nlohmann::json doc;
   {
     py::gil_scoped_release release;

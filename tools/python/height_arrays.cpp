@@ -24,8 +24,8 @@ py::array heightsView(const py::object& buffer) {
   const py::ssize_t nx = map.nx(), ny = map.ny();
   const py::ssize_t rowBytes = nx * py::ssize_t(sizeof(double));
   double* top = map.heights().data() + (ny - 1) * nx;  // the largest y: image row 0
-  return py::array(py::dtype::of<double>(), {ny, nx}, {-rowBytes, py::ssize_t(sizeof(double))},
-                   top, buffer);
+  return py::array(py::dtype::of<double>(), {ny, nx}, {-rowBytes, py::ssize_t(sizeof(double))}, top,
+                   buffer);
 }
 
 py::array heightsView(ZMap&& map) {
@@ -38,8 +38,8 @@ ZMap zmapFromArray(const py::handle& heights, GridSpec grid, const char* field) 
   const Array a = Array::ensure(heights);
   if (!a) throw InputError(field, "expected an array of numbers (ny, nx)");
   if (a.ndim() != 2)
-    throw InputError(field, fmt::format("expected a 2-D array (ny, nx), got {} dimensions",
-                                        a.ndim()));
+    throw InputError(field,
+                     fmt::format("expected a 2-D array (ny, nx), got {} dimensions", a.ndim()));
   if (a.shape(0) < 1 || a.shape(1) < 1) throw InputError(field, "is empty");
   grid.nx = a.shape(1);
   grid.ny = a.shape(0);
@@ -53,8 +53,9 @@ ZMap zmapFromArray(const py::handle& heights, GridSpec grid, const char* field) 
 GridSpec gridFromPython(const py::handle& grid, const char* field) {
   if (py::isinstance<GridSpec>(grid)) return grid.cast<GridSpec>();
   if (!py::isinstance<py::dict>(grid) || !grid.contains("origin") || !grid.contains("spacing"))
-    throw InputError(field, "expected a scallop.Grid or a dict with \"origin\" [x, y] and "
-                            "\"spacing\" (mm), like report[\"grid\"]");
+    throw InputError(field,
+                     "expected a scallop.Grid or a dict with \"origin\" [x, y] and "
+                     "\"spacing\" (mm), like report[\"grid\"]");
   GridSpec g;
   try {
     const py::sequence origin = grid["origin"].cast<py::sequence>();
@@ -157,11 +158,12 @@ void bindHeightArrays(py::module_& m) {
              g.nx = nx;
              g.ny = ny;
              if (!(spacing > 0) || !std::isfinite(spacing))
-               throw InputError("spacing", fmt::format("expected a length > 0 mm, got {:g}",
-                                                       spacing));
+               throw InputError("spacing",
+                                fmt::format("expected a length > 0 mm, got {:g}", spacing));
              if (nx < 1 || ny < 1)
                throw InputError("nx, ny", fmt::format("expected at least 1 cell each, got "
-                                                      "{} x {}", nx, ny));
+                                                      "{} x {}",
+                                                      nx, ny));
              return g;
            }),
            py::arg("origin"), py::arg("spacing"), py::arg("nx"), py::arg("ny"),
@@ -183,14 +185,16 @@ void bindHeightArrays(py::module_& m) {
                                   g.originY + double(g.ny) * g.spacing);
           },
           "(x0, x1, y0, y1), mm: Matplotlib's imshow(heights, extent=grid.extent).")
-      .def("__eq__",
-           [](const GridSpec& a, const GridSpec& b) {
-             return a.originX == b.originX && a.originY == b.originY && a.spacing == b.spacing &&
-                    a.nx == b.nx && a.ny == b.ny;
-           })
+      .def(
+          "__eq__",
+          [](const GridSpec& a, const GridSpec& b) {
+            return a.originX == b.originX && a.originY == b.originY && a.spacing == b.spacing &&
+                   a.nx == b.nx && a.ny == b.ny;
+          },
+          py::is_operator())
       .def("__repr__", [](const GridSpec& g) {
-        return fmt::format("Grid(origin=({}, {}), spacing={}, nx={}, ny={})", g.originX,
-                           g.originY, g.spacing, g.nx, g.ny);
+        return fmt::format("Grid(origin=({}, {}), spacing={}, nx={}, ny={})", g.originX, g.originY,
+                           g.spacing, g.nx, g.ny);
       });
 
   m.def("read_heights", &readHeights, py::arg("path"),

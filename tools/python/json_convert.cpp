@@ -54,8 +54,8 @@ json fromPython(const py::handle& value, const std::string& where) {
     json object = json::object();
     for (const auto& [key, item] : value.cast<py::dict>()) {
       if (!py::isinstance<py::str>(key))
-        throw InputError(place, "has the key " + std::string(py::repr(key)) +
-                                    "; expected str keys");
+        throw InputError(place,
+                         "has the key " + std::string(py::repr(key)) + "; expected str keys");
       const std::string name = key.cast<std::string>();
       object[name] = fromPython(item, where.empty() ? "job: " + name : where + "." + name);
     }
@@ -72,7 +72,8 @@ json fromPython(const py::handle& value, const std::string& where) {
   // and numbers (__float__) are taken as such.
   if (py::hasattr(value, "tolist")) return fromPython(value.attr("tolist")(), where);
   if (py::hasattr(value, "__index__")) return value.attr("__index__")().cast<int64_t>();
-  if (py::hasattr(value, "__float__")) return fromPython(py::float_(value.attr("__float__")()), where);
+  if (py::hasattr(value, "__float__"))
+    return fromPython(py::float_(value.attr("__float__")()), where);
   throw InputError(place, "is a " + std::string(py::str(value.get_type().attr("__name__"))) +
                               "; expected a dict, list, str, number, bool or None");
 }

@@ -23,7 +23,7 @@ PYBIND11_MODULE(scallop, m) {
       "  simulate(job) -> Result      heights (NumPy view, row 0 = largest y), grid, report\n"
       "  interval(tool=..., ...)      path intervals of the seeds vs the simulated truth\n"
       "  stats(heights, spacing)      ISO 25178-2 Sa, Sq, Ssk, Sku, Sp, Sv, Sz\n"
-      "  read_heights(path)           .gsf / .exr -> (heights, grid)\n"
+      "  read_heights(path)           .gsf / .exr / .x3p -> (heights, grid)\n"
       "  write_heights(path, h, grid) .gsf / .exr / .x3p / .png / .tif\n"
       "  InputError                   bad input (a ValueError); the message names the field\n\n"
       "Example:\n"
@@ -35,9 +35,9 @@ PYBIND11_MODULE(scallop, m) {
       "                                            'depth': 0.5}}})\n"
       "  print(r.heights.shape, r.report['measurements']['max_scallop_height'])";
   m.attr("__version__") = scallop::kScallopVersion;
-  py::register_exception<scallop::InputError>(m, "InputError", PyExc_ValueError)
-      .doc() = "Bad input: the message names the file, line, field or keyword and what was "
-               "expected\n(the CLI's exit status 1). A subclass of ValueError.";
+  py::register_exception<scallop::InputError>(m, "InputError", PyExc_ValueError).doc() =
+      "Bad input: the message names the file, line, field or keyword and what was "
+      "expected\n(the CLI's exit status 1). A subclass of ValueError.";
   scallop::python::bindHeightArrays(m);
   scallop::python::bindSimulate(m);
   scallop::python::bindAnalysis(m);

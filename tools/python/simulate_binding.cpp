@@ -40,7 +40,8 @@ class PythonProgress {
     if (error_) throw PythonCancel();
     const Clock::time_point now = Clock::now();
     const bool poll = std::this_thread::get_id() == mainThread_ && now - lastPoll_ >= kPollEvery;
-    const bool report = !callback_.is_none() && (done == total || now - lastReport_ >= kReportEvery);
+    const bool report =
+        !callback_.is_none() && (done == total || now - lastReport_ >= kReportEvery);
     if (!poll && !report) return;
     py::gil_scoped_acquire gil;
     if (poll) {
@@ -105,8 +106,8 @@ JobInput jobInput(const py::handle& job) {
   throw InputError("job", "expected a dict (the job file's JSON) or the path of a job file");
 }
 
-Result simulatePython(const py::object& job, std::optional<int> threads,
-                      const py::object& progress, const std::string& method, bool verbose) {
+Result simulatePython(const py::object& job, std::optional<int> threads, const py::object& progress,
+                      const std::string& method, bool verbose) {
   if (threads && *threads < 1)
     throw InputError("threads", "expected a number of threads >= 1 (None: all cores), got " +
                                     std::to_string(*threads));
@@ -130,8 +131,8 @@ Result simulatePython(const py::object& job, std::optional<int> threads,
     if (threads)
       threadLimit = std::make_unique<tbb::global_control>(
           tbb::global_control::max_allowed_parallelism, size_t(*threads));
-    const Job loaded = input.file.empty() ? loadJob(input.text, input.source)
-                                          : loadJobFile(input.file);
+    const Job loaded =
+        input.file.empty() ? loadJob(input.text, input.source) : loadJobFile(input.file);
     run = computeSimulation(loaded, settings);
   } catch (const PythonCancel&) {
     poller.raise();
@@ -158,8 +159,8 @@ void bindSimulate(py::module_& m) {
                     "report.json's document as a dict (what `scallop simulate --json` "
                     "prints), with\n\"outputs\" empty since nothing is written.")
       .def("__repr__", [](const Result& r) {
-        return "<scallop.Result " + std::to_string(r.grid.nx) + " x " +
-               std::to_string(r.grid.ny) + " cells>";
+        return "<scallop.Result " + std::to_string(r.grid.nx) + " x " + std::to_string(r.grid.ny) +
+               " cells>";
       });
 
   m.def("simulate", &simulatePython, py::arg("job"), py::arg("threads") = py::none(),

@@ -23,8 +23,7 @@ json pathFileReport(const Job& job, bool quiet) {
   return {{"format", job.pathFormat}, {"warnings", w.kept}, {"warnings_total", w.total}};
 }
 
-json designReport(const Job& job, const ZMap& map,
-                  const std::string& outDir, bool quiet) {
+json designReport(const Job& job, const ZMap& map, const std::string& outDir, bool quiet) {
   const MeshIndex index(*job.design);
   DesignComparison c = compareWithDesign(map, index, job.gougeTolerance);
   attributeGouges(c, map, job.cutter, job.path);

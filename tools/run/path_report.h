@@ -23,7 +23,6 @@ nlohmann::json pathFileReport(const Job& job, bool quiet);
 // statistics (machined - design, mm), over-cut and under-cut areas, and the deepest
 // gouges (at most 100) with the moves, and file lines, that made them. Prints a
 // summary on stderr unless `quiet`.
-nlohmann::json designReport(const Job& job, const ZMap& map,
-                            const std::string& outDir, bool quiet);
+nlohmann::json designReport(const Job& job, const ZMap& map, const std::string& outDir, bool quiet);
 
 }  // namespace scallop

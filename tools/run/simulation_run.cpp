@@ -47,8 +47,7 @@ InMemoryHeights computeHeights(const Job& job, const RunSettings& settings) {
     // The classical z-map baseline (raycast/stamp_caster.h), reported in the same slots.
     StampOptions stamp;
     stamp.progress = options.cast.progress;
-    StampSimulationResult st =
-        simulateStamped(job.cutter, job.path, job.stock, grid, stamp);
+    StampSimulationResult st = simulateStamped(job.cutter, job.path, job.stock, grid, stamp);
     out.sim.map = std::move(st.map);
     out.sim.scene.segments = st.segments;
     out.sim.cast.cells = st.stamp.cells;

@@ -24,7 +24,7 @@ CellRegion statsRegion(const GridSpec& grid, const std::vector<double>& rectangl
 
 // {"grid", "region_cells", "region_mm", "surface_stats"} of `map` over `region`;
 // `stats`, if given, receives the parameters as numbers.
-nlohmann::json surfaceStatsDocument(const ZMap& map, const CellRegion& region,
-                                    Levelling levelling, SurfaceStats* stats = nullptr);
+nlohmann::json surfaceStatsDocument(const ZMap& map, const CellRegion& region, Levelling levelling,
+                                    SurfaceStats* stats = nullptr);
 
 }  // namespace scallop
