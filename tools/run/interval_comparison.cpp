@@ -123,7 +123,7 @@ Cutter cutterFromOptions(const std::string& tool, double radius, double cornerRa
     throw InputError(names.cornerRadius,
                      "must satisfy 0 < corner radius < radius = " + fmt::format("{:g}", radius) +
                          " mm for a bull cutter, got " + fmt::format("{:g}", cornerRadius) +
-                         " (corner radius = radius is --tool ball)");
+                         " (corner radius = radius is " + names.tool + " ball)");
   return Cutter::make(type, radius, cornerRadius, 0, "tool");
 }
 
