@@ -3,6 +3,9 @@ jobs, threads, progress and Ctrl-C."""
 import gc
 import json
 import math
+import os
+import subprocess
+import sys
 import signal
 import threading
 import time
@@ -125,6 +128,26 @@ def test_the_view_keeps_the_map_alive():
     gc.collect()
     scallop.simulate(ball_job(spacing=0.03))  # reuse freed memory, if any were freed
     assert np.array_equal(h, expected)
+
+
+def test_the_process_holds_one_map_not_two():
+    # In a fresh process, so that the peak resident memory is this run's: a 112 MB map
+    # raises it by one map (plus the small scene), where a copy would add a second.
+    code = """if True:
+        import resource, sys
+        import scallop
+        from conftest import bull_job
+        before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+        r = scallop.simulate(bull_job(spacing=0.002))
+        after = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+        print(r.heights.nbytes, after - before)
+    """
+    here = os.path.dirname(os.path.abspath(__file__))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          cwd=here, check=True)
+    map_bytes, growth = map(int, done.stdout.split())
+    assert map_bytes == 14_000_000 * 8
+    assert 0.9 * map_bytes < growth < 1.5 * map_bytes
 
 
 # --- Bad jobs: InputError naming the field, nothing written ---------------------------
