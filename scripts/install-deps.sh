@@ -7,6 +7,8 @@ PACKAGES="cmake ninja-build g++ ccache pkg-config \
   libcli11-dev nlohmann-json3-dev libfmt-dev libgtest-dev libbenchmark-dev \
   libzip-dev libfreetype-dev fonts-dejavu-core gwyddion xvfb xauth clang libclang-rt-14-dev \
   slurm-wlm munge"
+# The Python module (tools/python), its tests and examples/python.
+PACKAGES="$PACKAGES pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib"
 
 missing=""
 for p in $PACKAGES; do

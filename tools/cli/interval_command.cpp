@@ -8,127 +8,11 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "analysis/path_interval.h"
-#include "sweep/input_error.h"
 #include "tools/cli/command.h"
 
 namespace scallop {
 
 using nlohmann::json;
-
-namespace {
-
-json numberOrNull(bool valid, double v) {
-  return valid ? json(v) : json(nullptr);
-}
-
-}  // namespace
-
-IntervalComparison compareIntervals(const SimulatedPass& pass, double scallopMm) {
-  IntervalComparison out;
-  out.cutter = pass.cutter();
-  out.leadDeg = pass.leadDeg();
-  out.tiltDeg = pass.tiltDeg();
-  out.scallopMm = scallopMm;
-  out.exact = pass.halfIntervals(scallopMm);
-
-  const Cutter& c = pass.cutter();
-  if (c.type == CutterType::Flat) {
-    for (const ProcedureInfo& procedure : kProcedures) {
-      ProcedureComparison p;
-      p.name = procedure.name;
-      p.source = procedure.source;
-      p.reason = p.name + ": the seeds give no procedure for a flat end mill (seed 000 " +
-                 "covers filleted, seed 001 Eq. (1) ball end mills)";
-      out.procedures.push_back(p);
-    }
-    return out;
-  }
-  ProcedureTool tool;
-  tool.type = c.type == CutterType::Ball ? ProcedureToolType::Ball : ProcedureToolType::Bull;
-  tool.radiusMm = c.radius;
-  tool.cornerRadiusMm = c.type == CutterType::Ball ? 0 : c.cornerRadius;
-  for (const NamedProcedureResult& r : halfIntervalProcedures(tool, pass.leadDeg(), scallopMm)) {
-    ProcedureComparison p;
-    p.name = r.name;
-    p.source = r.source;
-    p.applicable = r.result.applicable;
-    p.reason = r.result.reason;
-    // A ball's sphere looks the same in every posture; a torus does not, and the
-    // filleted procedures of seed 000 model the inclination along the feed only.
-    if (p.applicable && c.type == CutterType::Bull && pass.tiltDeg() != 0) {
-      p.applicable = false;
-      p.reason = r.name + ": seed 000 models inclination along the feed only; tilt = " +
-                 fmt::format("{:g}", pass.tiltDeg()) + " deg is outside it";
-    }
-    if (p.applicable) {
-      p.halfIntervalMm = r.result.value;
-      p.cusp = pass.cusp(2 * p.halfIntervalMm);
-    }
-    out.procedures.push_back(p);
-  }
-  return out;
-}
-
-json toolJson(const Cutter& cutter) {
-  json t = {{"type", toString(cutter.type)}, {"radius", cutter.radius}};
-  if (cutter.type == CutterType::Bull) t["corner_radius"] = cutter.cornerRadius;
-  return t;
-}
-
-json toJson(const IntervalComparison& c) {
-  json doc;
-  doc["tool"] = toolJson(c.cutter);
-  doc["lead_deg"] = c.leadDeg;
-  doc["tilt_deg"] = c.tiltDeg;
-  doc["scallop"] = c.scallopMm;
-  doc["simulated_half_interval"] = c.exact.halfIntervalMm();
-  doc["simulated_half_interval_plus"] = c.exact.plusMm;
-  doc["simulated_half_interval_minus"] = c.exact.minusMm;
-  json procs = json::array();
-  for (const ProcedureComparison& p : c.procedures) {
-    const bool simulated = p.applicable && p.cusp.covered;
-    procs.push_back({{"name", p.name},
-                     {"source", p.source},
-                     {"applicable", p.applicable},
-                     {"reason", p.reason},
-                     {"half_interval", numberOrNull(p.applicable, p.halfIntervalMm)},
-                     {"simulated_scallop", numberOrNull(simulated, p.cusp.heightMm)},
-                     {"scallop_error", numberOrNull(simulated, p.cusp.heightMm - c.scallopMm)},
-                     {"half_interval_error",
-                      numberOrNull(p.applicable, p.halfIntervalMm - c.exact.halfIntervalMm())}});
-  }
-  doc["procedures"] = procs;
-  doc["units"] = {{"length", "mm"}, {"angle", "deg"}};
-  return doc;
-}
-
-void checkAngleOption(const char* option, double deg) {
-  if (!std::isfinite(deg) || std::fabs(deg) >= 90)
-    throw InputError(
-        option, "must be an angle in degrees with |angle| < 90, got " + fmt::format("{:g}", deg));
-}
-
-Cutter cutterFromOptions(const std::string& tool, double radius, double cornerRadius,
-                         bool cornerGiven) {
-  const CutterType type = parseCutterType(tool, "--tool");
-  if (!(radius > 0) || !(radius <= 1e6))
-    throw InputError("--radius",
-                     "must be a length in (0, 1e6] mm, got " + fmt::format("{:g}", radius));
-  if (type != CutterType::Bull) {
-    if (cornerGiven)
-      throw InputError("--corner-radius",
-                       std::string("only a bull cutter has a corner radius; a ") + toString(type) +
-                           " cutter's is fixed");
-    return Cutter::make(type, radius, 0, 0, "tool");
-  }
-  if (!std::isfinite(cornerRadius) || cornerRadius <= 0 || cornerRadius >= radius)
-    throw InputError("--corner-radius",
-                     "must satisfy 0 < corner radius < radius = " + fmt::format("{:g}", radius) +
-                         " mm for a bull cutter, got " + fmt::format("{:g}", cornerRadius) +
-                         " (corner radius = radius is --tool ball)");
-  return Cutter::make(type, radius, cornerRadius, 0, "tool");
-}
 
 namespace {
 
@@ -176,21 +60,21 @@ int runInterval(const IntervalArgs& args) {
   const CutterType type = parseCutterType(args.tool, "--tool");
   const bool cornerGiven = args.cornerOption->count() > 0;
   if (type == CutterType::Bull && !cornerGiven) {
+    // A missing option is a usage error (exit 2), not bad input.
     std::fprintf(stderr,
                  "scallop: error: --corner-radius is required for --tool bull\n"
                  "Run with --help for more information.\n");
     return 2;
   }
-  const Cutter cutter = cutterFromOptions(args.tool, args.radius, args.cornerRadius, cornerGiven);
-  checkAngleOption("--lead", args.leadDeg);
-  checkAngleOption("--tilt", args.tiltDeg);
-  if (!std::isfinite(args.scallop) || args.scallop <= 0)
-    throw InputError("--scallop",
-                     "must be a height > 0 mm, got " + fmt::format("{:g}", args.scallop));
-
-  const SimulatedPass pass(cutter, args.leadDeg, args.tiltDeg);
-  const IntervalComparison comparison = compareIntervals(pass, args.scallop);
-  if (!comparison.exact.reachable) throw InputError("--scallop", comparison.exact.reason);
+  IntervalRequest request;
+  request.tool = args.tool;
+  request.radiusMm = args.radius;
+  request.cornerRadiusMm = args.cornerRadius;
+  request.cornerGiven = cornerGiven;
+  request.leadDeg = args.leadDeg;
+  request.tiltDeg = args.tiltDeg;
+  request.scallopMm = args.scallop;
+  const IntervalComparison comparison = compareIntervals(request);
   if (args.json)
     std::printf("%s\n", toJson(comparison).dump(2).c_str());
   else

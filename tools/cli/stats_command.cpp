@@ -13,7 +13,7 @@
 #include "sweep/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/height_export.h"
-#include "tools/run/report.h"
+#include "tools/run/stats_document.h"
 
 namespace scallop {
 
@@ -50,25 +50,10 @@ json roughnessJson(const Profile& p, const RoughnessStats& r) {
 int runStats(const StatsArgs& args) {
   const ZMap map = readHeightFile(args.file);
   const GridSpec& g = map.grid();
-  const CellRegion region = args.region.empty()
-                                ? wholeMap(g)
-                                : regionOfRectangle(g, args.region[0], args.region[1],
-                                                    args.region[2], args.region[3], "--region");
-  const SurfaceStats s =
-      surfaceStats(map, region, args.level == "none" ? Levelling::kNone : Levelling::kPlane);
-  json doc = {
-      {"file", args.file},
-      {"grid",
-       {{"origin", {g.originX, g.originY}},
-        {"spacing", g.spacing},
-        {"nx", g.nx},
-        {"ny", g.ny},
-        {"units", "mm"}}},
-      {"region_cells", {{"i", {region.i0, region.i1}}, {"j", {region.j0, region.j1}}}},
-      {"region_mm",
-       {g.originX + double(region.i0) * g.spacing, g.originY + double(region.j0) * g.spacing,
-        g.originX + double(region.i1) * g.spacing, g.originY + double(region.j1) * g.spacing}},
-      {"surface_stats", surfaceStatsJson(s)}};
+  const CellRegion region = statsRegion(g, args.region, "--region");
+  SurfaceStats s;
+  json doc = surfaceStatsDocument(map, region, parseLevelling(args.level, "--level"), &s);
+  doc["file"] = args.file;
   std::unique_ptr<Profile> profile;
   RoughnessStats rough;
   if (!args.profile.empty()) {

@@ -67,9 +67,12 @@ json designReport(const Job& job, const ZMap& map, const std::string& outDir, bo
   const MeshIndex index(*job.design);
   DesignComparison c = compareWithDesign(map, index, job.gougeTolerance);
   attributeGouges(c, map, job.cutter, job.path);
-  const std::string png = (std::filesystem::path(outDir) / "deviation.png").string();
-  const double limit = writeDeviationPng(
-      c, png, "machined - design: " + std::filesystem::path(job.designFile).filename().string());
+  double limit = 0;
+  if (!outDir.empty()) {
+    const std::string png = (std::filesystem::path(outDir) / "deviation.png").string();
+    limit = writeDeviationPng(
+        c, png, "machined - design: " + std::filesystem::path(job.designFile).filename().string());
+  }
 
   const DeviationSummary& s = c.summary;
   json gouges = json::array();
@@ -104,9 +107,11 @@ json designReport(const Job& job, const ZMap& map, const std::string& outDir, bo
        {{"cells", s.undercutCells},
         {"area_mm2", s.undercutAreaMm2},
         {"max_mm", std::max(0.0, s.max)}}},
-      {"gouges", {{"count", c.gouges.size()}, {"max_depth_mm", maxDepth}, {"deepest", gouges}}},
-      {"image", "deviation.png"},
-      {"image_colour_range_mm", limit}};
+      {"gouges", {{"count", c.gouges.size()}, {"max_depth_mm", maxDepth}, {"deepest", gouges}}}};
+  if (!outDir.empty()) {
+    r["image"] = "deviation.png";
+    r["image_colour_range_mm"] = limit;
+  }
   if (!quiet) {
     std::fprintf(stderr,
                  "design: %lld cells compared, machined - design in [%.6f, %.6f] mm, rms %.6f "

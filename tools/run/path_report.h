@@ -20,7 +20,8 @@ struct Job;
 nlohmann::json pathFileReport(const Job& job, bool quiet);
 
 // Compares `map` with job.design (analysis/design_deviation.h), writes
-// DIR/deviation.png atomically and returns the "design" section: deviation
+// DIR/deviation.png atomically (not when `outDir` is empty; nor are the section's
+// "image" and "image_colour_range_mm" then) and returns the "design" section: deviation
 // statistics (machined - design, mm), over-cut and under-cut areas, and the deepest
 // gouges (at most 100) with the moves, and file lines, that made them. Prints a
 // summary on stderr unless `quiet`.

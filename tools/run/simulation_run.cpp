@@ -24,10 +24,17 @@ using nlohmann::json;
 
 namespace {
 
-// The whole map in memory: heights, then the four outputs and the design comparison.
-json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point tStart) {
+// The heights of the whole map in memory, by the exact sweep or the stamp baseline.
+struct InMemoryHeights {
+  SimulationResult sim;
+  double stampStepMm = 0;  // --method stamp only
+  json pathFile;           // pathFileReport() for a job with a path file
+};
+
+InMemoryHeights computeHeights(const Job& job, const RunSettings& settings) {
   const GridSpec grid = job.grid();
-  const json pathFile = job.isRaster ? json() : pathFileReport(job, settings.quiet);
+  InMemoryHeights out;
+  out.pathFile = job.isRaster ? json() : pathFileReport(job, settings.quiet);
   if (!settings.quiet)
     std::fprintf(stderr,
                  "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
@@ -36,46 +43,34 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
 
   SimulationOptions options;
   options.cast.progress = settings.progress;
-  SimulationResult sim;
-  double stampStep = 0;  // mm, --method stamp only
   if (settings.method == "stamp") {
     // The classical z-map baseline (raycast/stamp_caster.h), reported in the same slots.
     StampOptions stamp;
     stamp.progress = options.cast.progress;
-    StampSimulationResult st =
-        simulateStamped(job.cutter, job.path, job.stock, grid, stamp);
-    sim.map = std::move(st.map);
-    sim.scene.segments = st.segments;
-    sim.cast.cells = st.stamp.cells;
-    sim.cast.exactEvaluations = st.stamp.exactEvaluations;
-    sim.cast.seconds = st.stamp.seconds;
-    stampStep = st.stamp.minStep;
+    StampSimulationResult st = simulateStamped(job.cutter, job.path, job.stock, grid, stamp);
+    out.sim.map = std::move(st.map);
+    out.sim.scene.segments = st.segments;
+    out.sim.cast.cells = st.stamp.cells;
+    out.sim.cast.exactEvaluations = st.stamp.exactEvaluations;
+    out.sim.cast.seconds = st.stamp.seconds;
+    out.stampStepMm = st.stamp.minStep;
   } else {
-    sim = simulate(job.cutter, job.path, job.stock, grid, options);
+    out.sim = simulate(job.cutter, job.path, job.stock, grid, options);
   }
   if (settings.computed) settings.computed();
+  return out;
+}
 
-  // --- Outputs, each written to a temporary name and renamed when complete. ---------
-  namespace fs = std::filesystem;
-  const auto tWrite = Clock::now();
-  const fs::path dir(settings.outDir);
-  const std::string title = simulationTitle(job);
-  writeHeightsExr(sim.map, (dir / "heights.exr").string());
-  writeHeightsGsf(sim.map, (dir / "heights.gsf").string(), title);
-  PreviewOptions preview;
-  preview.title = title;
-  writePreviewPng(sim.map, (dir / "preview.png").string(), preview);
-
+// The record of an in-memory run, but for the design section and the timings of
+// writing and in all.
+RunRecord inMemoryRecord(const Job& job, const RunSettings& settings, const InMemoryHeights& h) {
+  const SimulationResult& sim = h.sim;
   RunRecord run;
-  run.design = job.design
-                   ? designReport(job, sim.map, settings.outDir, settings.quiet)
-                   : json();
-  run.writeSeconds = secondsSince(tWrite);
   run.jobSource = job.source;
   run.inputs = jobToJson(job);
-  run.grid = grid;
+  run.grid = job.grid();
   run.method = settings.method;
-  run.stampStepMm = stampStep;
+  run.stampStepMm = h.stampStepMm;
   run.cuttingMoves = int64_t(job.path.cuttingMoves());
   run.sweptSegments = int64_t(sim.scene.segments);
   run.cullingTiles = int64_t(sim.scene.tiles);
@@ -87,11 +82,42 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
   run.exactEvaluations = double(sim.cast.exactEvaluations);
   if (job.isRaster) run.raster = rasterMeasurements(job, sim.map);
   run.surfaceStats = mapSurfaceStatsJson(sim.map);
-  run.pathFile = pathFile;
+  run.pathFile = h.pathFile;
+  return run;
+}
+
+// The whole map in memory: heights, then the four outputs and the design comparison.
+json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point tStart) {
+  const InMemoryHeights h = computeHeights(job, settings);
+  const ZMap& map = h.sim.map;
+
+  // --- Outputs, each written to a temporary name and renamed when complete. ---------
+  namespace fs = std::filesystem;
+  const auto tWrite = Clock::now();
+  const fs::path dir(settings.outDir);
+  const std::string title = simulationTitle(job);
+  writeHeightsExr(map, (dir / "heights.exr").string());
+  writeHeightsGsf(map, (dir / "heights.gsf").string(), title);
+  PreviewOptions preview;
+  preview.title = title;
+  writePreviewPng(map, (dir / "preview.png").string(), preview);
+
+  RunRecord run = inMemoryRecord(job, settings, h);
+  run.design = job.design ? designReport(job, map, settings.outDir, settings.quiet) : json();
+  run.writeSeconds = secondsSince(tWrite);
   run.totalSeconds = secondsSince(tStart);
   const json report = simulationReport(run);
   writeReport(report, settings.outDir);
   return report;
+}
+
+// What runSimulation refuses before the long computation, whatever the outputs.
+void checkRunnable(const Job& job, bool exact, bool banded) {
+  if (job.design && (!exact || banded))
+    throw InputError(job.source + ": design",
+                     "the design comparison needs --method exact and the whole map in memory "
+                     "(not --tiled, --tile-rows or --bands)");
+  if (exact) checkSceneFitsMemory(job);
 }
 
 }  // namespace
@@ -105,12 +131,8 @@ RunOutcome runSimulation(const Job& job, const RunSettings& settings) {
   const auto tStart = Clock::now();
   const bool exact = settings.method == "exact";
   const bool banded = settings.tiled || settings.tileRows > 0 || !settings.bands.empty();
-  if (job.design && (!exact || banded))
-    throw InputError(job.source + ": design",
-                     "the design comparison needs --method exact and the whole map in memory "
-                     "(not --tiled, --tile-rows or --bands)");
   // Fail before the long computation, not after it.
-  if (exact) checkSceneFitsMemory(job);
+  checkRunnable(job, exact, banded);
   ensureWritableDirectory(settings.outDir);
 
   if (!exact && banded)
@@ -124,6 +146,20 @@ RunOutcome runSimulation(const Job& job, const RunSettings& settings) {
     return runTiledSimulation(job, settings);
   }
   return {RunOutcome::Kind::kInMemory, runInMemory(job, settings, tStart)};
+}
+
+ComputedSimulation computeSimulation(const Job& job, const RunSettings& settings) {
+  const auto tStart = Clock::now();
+  checkRunnable(job, settings.method == "exact", false);
+  checkGridFitsMemory(job.grid(), job.source + ": grid.spacing");
+  InMemoryHeights h = computeHeights(job, settings);
+  RunRecord run = inMemoryRecord(job, settings, h);
+  // No outDir: the comparison without its picture.
+  run.design = job.design ? designReport(job, h.sim.map, "", settings.quiet) : json();
+  run.totalSeconds = secondsSince(tStart);
+  json report = simulationReport(run);
+  report["outputs"] = json::array();
+  return {std::move(h.sim.map), std::move(report)};
 }
 
 }  // namespace scallop

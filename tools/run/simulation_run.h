@@ -2,13 +2,16 @@
 // as heights.exr, heights.gsf, preview.png and report.json (CONVENTIONS.md "Height
 // images"), with the whole map in memory or band by band (tools/run/tiled_simulation.h)
 // when it does not fit or bands are asked for. `scallop simulate` is this plus its
-// command line (tools/cli/simulate_command.cpp).
+// command line (tools/cli/simulate_command.cpp); the Python module's simulate() is
+// computeSimulation(), the same in-memory run without the files.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "raycast/zmap.h"
 
 namespace scallop {
 
@@ -41,6 +44,19 @@ struct RunOutcome {
 // design comparison in bands, a map or scene larger than memory and disk allow, an
 // output folder that cannot be written).
 RunOutcome runSimulation(const Job& job, const RunSettings& settings);
+
+// The heights of a run held in memory, and its report.json document.
+struct ComputedSimulation {
+  ZMap map;
+  nlohmann::json report;
+};
+
+// The in-memory run of runSimulation without writing anything (settings.outDir,
+// tiled, tileRows and bands are not used): the heights, and the report runSimulation
+// would write, with "outputs" empty and the design section (if any) without its
+// picture ("image", "image_colour_range_mm"). Throws InputError for a job whose map or
+// scene does not fit in memory.
+ComputedSimulation computeSimulation(const Job& job, const RunSettings& settings);
 
 // The title of a run's height images, e.g. "scallop bull R=3 MM".
 std::string simulationTitle(const Job& job);

@@ -1,0 +1,71 @@
+// X3P import (tools/io/x3p_reader.h): scallop's own archives read back (heights in
+// float64 metres, so exactly (z * 1e-3) * 1e3 mm), and damaged or foreign archives
+// refused with a message naming the file and what is wrong (archives with a member
+// missing, damaged or inconsistent: tests/python/test_heights_io.py, which edits them
+// with Python's zipfile).
+#include "tools/io/x3p_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "cli_harness.h"
+#include "raycast/zmap.h"
+#include "sweep/input_error.h"
+#include "tools/io/x3p_writer.h"
+
+namespace scallop::test {
+namespace {
+
+ZMap sampleMap() {
+  GridSpec g;
+  g.originX = -1.25;
+  g.originY = 3.5;
+  g.spacing = 0.125;
+  g.nx = 7;
+  g.ny = 5;
+  ZMap map(g, 0.0);
+  for (int64_t j = 0; j < g.ny; ++j)
+    for (int64_t i = 0; i < g.nx; ++i) map.at(i, j) = std::sin(0.7 * double(i)) - 0.3 * double(j);
+  return map;
+}
+
+std::string readError(const std::string& path) {
+  try {
+    readHeightsX3p(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+class X3pReader : public CliFixture {};
+
+TEST_F(X3pReader, ReadsBackWhatTheWriterWrote) {
+  const ZMap map = sampleMap();
+  const std::string file = path("h.x3p");
+  writeHeightsX3p(map, file, "a test");
+  const ZMap back = readHeightsX3p(file);
+  const GridSpec &g = map.grid(), &b = back.grid();
+  ASSERT_EQ(b.nx, g.nx);
+  ASSERT_EQ(b.ny, g.ny);
+  EXPECT_NEAR(b.spacing, g.spacing, 1e-15);
+  EXPECT_NEAR(b.originX, g.originX, 1e-12);
+  EXPECT_NEAR(b.originY, g.originY, 1e-12);
+  for (int64_t j = 0; j < g.ny; ++j)
+    for (int64_t i = 0; i < g.nx; ++i)
+      EXPECT_EQ(back.at(i, j), (map.at(i, j) * 1e-3) * 1e3) << i << ", " << j;
+}
+
+TEST_F(X3pReader, RefusesWhatIsNotAnArchiveNamingTheFile) {
+  EXPECT_NE(readError(path("none.x3p")).find("none.x3p: cannot open the X3P"), std::string::npos);
+
+  const std::string text = path("text.x3p");
+  std::ofstream(text) << "not a zip archive";
+  EXPECT_NE(readError(text).find("text.x3p: cannot open the X3P (zip) archive"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace scallop::test
