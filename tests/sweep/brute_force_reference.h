@@ -102,6 +102,13 @@ RefHit stationaryLowest(const RefCutter& c, const Vec3& tip, const Vec3& axis, d
 // negative: the line misses it by that much in the sense of the profile).
 double deepestDepth(const RefCutter& c, const Vec3& tip, const Vec3& axis, double x, double y);
 
+// The unit vector at polar angle `polar` from +Z and azimuth `azimuth` (radians): the
+// random axes of the turning-move tests.
+inline Vec3 unitFromAngles(double polar, double azimuth) {
+  return {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+          std::cos(polar)};
+}
+
 // Slerp as CONVENTIONS.md writes it ("Tool pose"): sin((1 - t) phi) a0 + sin(t phi) a1
 // over sin(phi), for unit a0, a1 (a0 where they coincide).
 inline Vec3 slerp(const Vec3& a0, const Vec3& a1, double t) {

@@ -11,17 +11,13 @@
 #include <random>
 
 #include "sweep/brute_force_reference.h"
+#include "sweep/constants.h"
 #include "sweep/pose_curve.h"
 
 namespace scallop {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-Vec3 unitFromAngles(double polar, double azimuth) {
-  return {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
-          std::cos(polar)};
-}
+using ref::unitFromAngles;
 
 struct Move {
   Cutter cutter;
