@@ -118,8 +118,8 @@ inline Vec3 slerp(const Vec3& a0, const Vec3& a1, double t) {
 }
 
 // A pose curve as the reference sees it: tip straight from p0 to p1 (or any function of
-// t), the axis any function of t (the tests write slerp and the machines' formulas from CONVENTIONS.md
-// themselves).
+// t), the axis any function of t (the tests write slerp and the machines' formulas from
+// CONVENTIONS.md themselves).
 struct RefCurve {
   Vec3 p0, p1;
   std::function<Vec3(double)> axis;

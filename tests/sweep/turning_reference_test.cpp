@@ -18,7 +18,9 @@ namespace ref {
 RefHit turningLowest(const RefCutter& c, const RefCurve& curve, double x, double y, int samples,
                      double* maxDepth) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  auto tipAt = [&](double t) { return curve.tip ? curve.tip(t) : curve.p0 + (curve.p1 - curve.p0) * t; };
+  auto tipAt = [&](double t) {
+    return curve.tip ? curve.tip(t) : curve.p0 + (curve.p1 - curve.p0) * t;
+  };
   auto F = [&](double t) {
     const RefHit h = stationaryLowest(c, tipAt(t), curve.axis(t), x, y);
     return h.hit ? h.z : kInf;
