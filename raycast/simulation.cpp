@@ -23,9 +23,10 @@ SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const Simulation
 }
 
 double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double stockTop,
-                          size_t* moves) {
+                          size_t* moves, const CuttingModel& cutting) {
   constexpr double kBytesPerTile = 500;  // TileBox (152) + Embree's BVH share, measured
-  const double R = cutter.radius, flute = cutter.fluteLength;
+  // With runout the moves hold the spindle envelope, radius R + runout.
+  const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
   double need = 0;
   size_t counted = 0;
   for (const Move& m : path.moves) {
@@ -39,7 +40,7 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double sto
     const double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
     const double T = cullingTileSide(R, length(m.to.tip - m.from.tip), w * h, SceneOptions());
     const bool turning = PoseCurve::turns(m.from.axis, m.to.axis);
-    need += double(SweptMove::bytesPerMove(turning)) +
+    need += double(SweptMove::bytesPerMove(turning, cutting.teeth())) +
             kBytesPerTile * std::ceil(w / T) * std::ceil(h / T);
     ++counted;
   }
@@ -50,7 +51,7 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double sto
 std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
                                        const Box3& stock, double spacing,
                                        const SimulationOptions& options) {
-  return std::make_unique<SweptScene>(sweepToolPath(cutter, path),
+  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.cutting),
                                       sceneOptionsFor(stock, spacing, options));
 }
 

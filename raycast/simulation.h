@@ -15,6 +15,7 @@ namespace scallop {
 struct SimulationOptions {
   double tileSize = 0;  // scene culling tile, mm (SceneOptions::tileSize)
   CastOptions cast;
+  CuttingModel cutting;  // envelope (default) or teeth
 };
 
 struct SimulationResult {
@@ -32,9 +33,10 @@ SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const Simulation
 // over a box that holds the move, each tile counted as kept, ~500 bytes with its share
 // of Embree's hierarchy). Measured on B3's path (22,960 turning moves of 0.05 mm):
 // 6.8 KB a move built, 12.7 KB estimated; it errs high, never low. `moves`, if given,
-// receives the number of moves counted.
+// receives the number of moves counted. With teeth (`cutting`) each move also holds a
+// ToothSweep.
 double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double stockTop,
-                          size_t* moves = nullptr);
+                          size_t* moves = nullptr, const CuttingModel& cutting = {});
 
 // The culling scene of `path` for a grid of cells of side `spacing` (mm): built once,
 // it serves any number of sub-grids (bands of a map too large to hold).

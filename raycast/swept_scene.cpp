@@ -418,7 +418,8 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
     const SweptMove& seg = impl_->segments[cand.segment];
     SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
     ++evaluations;
-    const LowestPoint lp = seg.lowestPoint(x, y, memo);
+    // The envelope's plane: below the envelope, so below the teeth's crossings too.
+    const LowestPoint lp = seg.envelopeLowestPoint(x, y, memo);
     TilePlane plane;
     if (planeFrom(seg, lp, x, y, plane)) cand.a = plane.a, cand.b = plane.b, cand.c = plane.c;
   }

@@ -20,7 +20,8 @@ namespace {
 //     for a turning move), and over the rectangle of cell centres a convex solid's
 //     heights are at most its largest corner value: no cell ends higher than U = that
 //     (or than its current height), so only moves that can go below U anywhere in the
-//     region can matter;
+//     region can matter (with teeth W's crossings are no convex function: U is then
+//     the region's current heights);
 //  3. one gathering ray collects those (each also gets the supporting plane of its
 //     solid below the centre), and each cell takes the exact minimum among them
 //     (lowestHeightAmong), which equals lowestHeight() cell by cell.
@@ -38,7 +39,7 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
   scene.lowestHeight(0.5 * (x0 + x1), 0.5 * (y0 + y1), ceiling, evals, &cache, &winner);
   if (winner != UINT32_MAX) previousWinner = winner;
   double upper = ceiling;
-  if (winner != UINT32_MAX) {
+  if (winner != UINT32_MAX && !scene.segments()[winner].teeth()) {
     const SweptMove& w = scene.segments()[winner];
     double tCentre = 0;
     if (w.turning()) {

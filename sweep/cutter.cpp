@@ -85,4 +85,38 @@ Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double 
   return c;
 }
 
+CutterTeeth CutterTeeth::make(int flutes, double helixDeg, double runout, double runoutPhaseDeg,
+                              double cutterRadius, const std::string& fieldPrefix) {
+  if (flutes < 1 || flutes > 16)
+    throw InputError(fieldPrefix + ".flutes",
+                     "must be a whole number of teeth from 1 to 16, got " + std::to_string(flutes));
+  if (!std::isfinite(helixDeg) || helixDeg < 0 || helixDeg > 60)
+    throw InputError(fieldPrefix + ".helix_deg",
+                     "must be a helix angle from 0 to 60 degrees, got " + fmtLength(helixDeg));
+  // Runout is a small eccentricity; beyond R / 10 the tool is not a milling cutter any
+  // more, and the spindle envelope (Cutter::spindleEnvelope) would be a poor bound.
+  if (!std::isfinite(runout) || runout < 0 || runout > 0.1 * cutterRadius)
+    throw InputError(fieldPrefix + ".runout_mm", "must be from 0 to radius / 10 (" +
+                                                     fmtLength(0.1 * cutterRadius) + " mm), got " +
+                                                     fmtLength(runout));
+  if (!std::isfinite(runoutPhaseDeg) || std::abs(runoutPhaseDeg) > 1e6)
+    throw InputError(fieldPrefix + ".runout_phase_deg", "must be a finite angle in degrees");
+  CutterTeeth teeth;
+  teeth.flutes = flutes;
+  teeth.helixDeg = helixDeg;
+  teeth.runout = runout;
+  teeth.runoutPhaseDeg = runoutPhaseDeg;
+  return teeth;
+}
+
+Cutter Cutter::spindleEnvelope() const {
+  if (teeth.runout <= 0) return *this;
+  // A point at radius rho from the cutter's axis is at most rho + runout from the
+  // spindle's: the profile moves out by the runout, its corner radius unchanged.
+  Cutter env = *this;
+  env.radius = radius + teeth.runout;
+  env.type = cornerRadius > 0 ? CutterType::Bull : CutterType::Flat;
+  return env;
+}
+
 }  // namespace scallop

@@ -17,6 +17,28 @@ const char* toString(CutterType type);
 // Parses "ball" | "flat" | "bull"; throws InputError naming `field` otherwise.
 CutterType parseCutterType(const std::string& name, const std::string& field = "tool.type");
 
+// The cutting edges (CONVENTIONS.md cutter keys `flutes`, `helix_deg`, `runout_mm`,
+// `runout_phase_deg`; docs/algorithm.md "Teeth"). Only the "teeth" cutting model reads
+// them; the envelope model sweeps the solid of revolution.
+//   * `flutes` teeth at body angles psi_k = 2 pi k / flutes, each an edge running along
+//     the whole meridian profile: from the axis across the flat bottom (radius Rb),
+//     round the corner (r) and up the flank (radius R) to the flute length L.
+//   * A helix of angle beta puts the edge point at height h above the tip at body angle
+//     psi_k + h tan(beta) / R (a right-hand helix, cutting clockwise, M3).
+//   * Runout: the cutter's own axis sits `runout` mm off the spindle axis, in the body
+//     direction at angle `runoutPhaseDeg` from tooth 0, and turns with the spindle.
+struct CutterTeeth {
+  int flutes = 2;
+  double helixDeg = 0;        // beta, degrees, in [0, 60]
+  double runout = 0;          // mm, in [0, R / 10]
+  double runoutPhaseDeg = 0;  // degrees, any finite angle
+
+  // Validates; throws InputError naming `fieldPrefix` + ".flutes" (an integer 1..16),
+  // ".helix_deg", ".runout_mm" (needs the cutter's radius) or ".runout_phase_deg".
+  static CutterTeeth make(int flutes, double helixDeg, double runout, double runoutPhaseDeg,
+                          double cutterRadius, const std::string& fieldPrefix = "tool");
+};
+
 struct Cutter {
   CutterType type = CutterType::Ball;
   double radius = 0;        // R, mm
@@ -30,6 +52,14 @@ struct Cutter {
                      double fluteLength = 0, const std::string& fieldPrefix = "tool");
 
   double bottomRadius() const { return radius - cornerRadius; }  // Rb, mm
+
+  CutterTeeth teeth;  // read by the "teeth" cutting model only
+
+  // The solid of revolution about the spindle axis that holds the cutter at every
+  // spindle angle: the profile pushed out by the runout (Rb + runout, r, L), so a ball
+  // with runout becomes a bull. The cutter itself without runout. Its heights are a
+  // proven lower bound of the teeth's (every edge point lies inside it).
+  Cutter spindleEnvelope() const;
 };
 
 }  // namespace scallop

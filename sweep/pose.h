@@ -48,6 +48,9 @@ struct Move {
   bool rapid = false;
   uint16_t tool = 0;
   uint32_t rotary = 0;
+  // Feed per tooth of this move, mm (G-code: F / (S flutes)); 0: the job's
+  // cutting.feed_per_tooth. Read by the "teeth" cutting model only.
+  double feedPerTooth = 0;
 };
 
 struct ToolPath {

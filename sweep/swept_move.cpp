@@ -172,9 +172,11 @@ unsigned long long SweptMove::unprovenSearches() {
   return unprovenCount.load();
 }
 
-size_t SweptMove::bytesPerMove(bool turning) {
-  // The control block and the segment of a constant-axis move live on the heap.
-  return sizeof(SweptMove) + (turning ? 0 : sizeof(SweptSegment) + 32);
+size_t SweptMove::bytesPerMove(bool turning, bool teeth) {
+  // The control block and the segment of a constant-axis move live on the heap, and
+  // so do the teeth.
+  return sizeof(SweptMove) + (turning ? 0 : sizeof(SweptSegment) + 32) +
+         (teeth ? sizeof(ToothSweep) + 32 : 0);
 }
 
 namespace {
@@ -236,9 +238,18 @@ LowestPoint SweptMove::planeHint(double x, double y) const {
   return segment_ ? segment_->lowestPoint(x, y) : stationaryLowestPoint(0.5, x, y);
 }
 
-LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
+LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo,
+                                           double cutoff) const {
   if (segment_) return segment_->lowestPoint(x, y, memo, cutoff);
   return turningLowestPoint(x, y, cutoff);
+}
+
+LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
+  // With teeth the envelope's height is the proven lower bound the crossing search
+  // starts from: a move whose envelope is at or above the cutoff has no crossing below.
+  const LowestPoint envelope = envelopeLowestPoint(x, y, memo, cutoff);
+  if (!teeth_) return envelope;
+  return teeth_->lowestCrossing(x, y, envelope, cutoff);
 }
 
 LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) const {

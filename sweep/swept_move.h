@@ -18,6 +18,7 @@
 #include "sweep/cutter.h"
 #include "sweep/pose_curve.h"
 #include "sweep/swept_segment.h"
+#include "sweep/tooth_sweep.h"
 
 namespace scallop {
 
@@ -27,7 +28,17 @@ class SweptMove {
   // A constant-axis move from an existing segment (the sweep of merged collinear moves).
   explicit SweptMove(const SweptSegment& segment);
 
-  // The lowest point of the swept solid on the vertical line through (x, y). `memo`
+  // Gives the move its cutting edges: lowestPoint() then returns the lowest crossing of
+  // an edge (ToothSweep), above the envelope's height, which stays the bound the
+  // culling uses (support(), bounds(), planeHint()).
+  void attachTeeth(std::shared_ptr<const ToothSweep> teeth) { teeth_ = std::move(teeth); }
+  const ToothSweep* teeth() const { return teeth_.get(); }
+  // The lowest point of the envelope alone (the swept solid), teeth or not.
+  LowestPoint envelopeLowestPoint(double x, double y, SectionMemo* memo = nullptr,
+                                  double cutoff = HUGE_VAL) const;
+
+  // The lowest point of the swept solid on the vertical line through (x, y) (with teeth:
+  // the lowest point an edge passes through, ToothSweep::lowestCrossing). `memo`
   // serves constant-axis moves (SweptSegment::lowestPoint). A height at or above
   // `cutoff` may be reported as a miss; the height returned otherwise does not depend
   // on `cutoff` or `memo`.
@@ -62,7 +73,7 @@ class SweptMove {
 
   // Bytes a move of this kind holds (the object and what it owns), for memory
   // estimates made before a scene is built.
-  static size_t bytesPerMove(bool turning);
+  static size_t bytesPerMove(bool turning, bool teeth = false);
 
   // Searches of turning moves, over all threads so far, that ran out of samples before
   // their proof closed (their height is still a real point of the solid). Tests
@@ -75,6 +86,7 @@ class SweptMove {
   Cutter cutter_;
   PoseCurve curve_;
   std::shared_ptr<const SweptSegment> segment_;  // constant axis only
+  std::shared_ptr<const ToothSweep> teeth_;      // the "teeth" cutting model only
   double reach_ = 0;  // farthest cutter point from the tip, hypot(L, R), mm
   double zTop_ = 0;   // turning: an upper bound of the solid's highest z, mm
   double tipSpeed_ = 0;  // turning: >= |d tip / dt| over the move, mm per unit t

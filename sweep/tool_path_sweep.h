@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sweep/cutter.h"
+#include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/swept_move.h"
 
@@ -17,10 +18,18 @@ namespace scallop {
 // with cutters[move.tool]. Consecutive collinear moves with the same constant axis and
 // cutter are merged: the swept solid of their union is the same set. A turn of 180
 // degrees and a tool index beyond `cutters` are InputErrors naming the move.
-std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path);
+//
+// With the "teeth" cutting model each move also carries its edges (ToothSweep) with the
+// spindle angle phi(s) = phi0 + 2 pi s / (flutes fz) of CuttingModel, s the tip's
+// distance along the path; its envelope is then the cutter's spindleEnvelope(). A move
+// without a feed per tooth (neither its own nor the model's), or whose tip is not linear
+// (TCP off), is an InputError naming the move.
+std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path,
+                                     const CuttingModel& cutting = {});
 
 // The same with path.cutters when the path has its own (a multi-tool program), and
 // otherwise `cutter` for every move.
-std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path);
+std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path,
+                                     const CuttingModel& cutting = {});
 
 }  // namespace scallop

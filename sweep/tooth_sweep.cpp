@@ -1,0 +1,337 @@
+// The lowest point at which a cutting edge crosses a vertical line (tooth_sweep.h).
+//
+// The crossing condition, one equation in t. At time t the cutter stands at its pose,
+// displaced by the runout (the cutter's own tip T(t) = tip(t) + runout u(psi_r - phi)).
+// The vertical line through (x, y) enters the convex cutter at its lowest point E(t)
+// (cutterLowestPoint) and leaves it at its highest X(t) (the lowest point of the cutter
+// mirrored in z). A point of the cutter's surface lies on an edge exactly when its
+// body angle is an edge's: with E - T = h a + rho (cos theta e1 + sin theta e2),
+//     F(t) = flutes (theta(t) + phi(t) - h(t) tan(beta) / R) / (2 pi)
+// is an integer (tooth k = F mod flutes). So the edges cross the line where F(t) is
+// an integer, at the heights E(t).z, and where the same function of X(t) is one, at
+// X(t).z; the top cap (h = L) carries no edge. Every crossing of the line with an edge
+// is one of these: an edge lies on the cutter's boundary, and the line meets the
+// boundary only at E and X (or, where it runs along a face, in a segment whose lowest
+// point is E).
+//
+// Finding every root. phi turns at phaseRate (rad per unit t), 2 pi / flutes in one
+// tooth period; theta and h move with the line's motion relative to the cutter, slowly
+// except near the cutter's axis (theta turns fast; every edge meets there) and the
+// silhouette (E and X meet). F is sampled a quarter tooth period apart; an interval
+// whose angle theta moves by more than half of what phi does, or that straddles the
+// silhouette, is halved (down to 1e-13 in t). On the intervals left F is monotone, so
+// its integers between the end values are all its roots; each is solved by bracketed
+// regula falsi to the bracket's last bit.
+//
+// Which intervals matter. Every edge point lies in the spindle envelope (the solid of
+// revolution holding the cutter at every spindle angle), so a crossing at t is no lower
+// than the envelope's lowest point h(t) at pose(t). For a constant axis, h is convex in
+// t (the cutter translates linearly: {(t, z) : (x, y, z) - tip(t) in K} is convex), its
+// minimum is the swept envelope's height at t*, and a subgradient h'(t) = (n . v) / n_z
+// (n its normal, v the tip velocity) gives tangent lines below it. So:
+//   * the scan starts at t* and runs outward, stopping where h >= the best crossing;
+//   * an interval is solved only where the tangent lines at its ends allow a height
+//     below the best;
+//   * without runout X(t).z is concave in t (the top of a convex set's slice), so an
+//     interval's exit crossings lie at or above the lower of its end values.
+// A turning move's h is not convex; its whole [0, 1] is scanned and an interval is
+// skipped only when ray clearance proves the envelope above the best over it
+// (ray_clearance.h). The result is the least crossing height: the pruning only drops
+// crossings no lower than one already found, so the height is a function of
+// (move, x, y) alone.
+#include "sweep/tooth_sweep.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sweep/constants.h"
+#include "sweep/ray_clearance.h"
+
+namespace scallop {
+
+namespace {
+
+constexpr double kTwoPi = 2 * kPi;
+// Smallest interval (in t) that is still halved: below it the line passes through the
+// cutter's axis (every edge meets there) or its silhouette within ~1e-13 of a move.
+constexpr double kMinInterval = 1e-13;
+constexpr int kMaxDepth = 48;
+constexpr int kSolveSteps = 80;
+
+double wrapAngle(double a) {  // to (-pi, pi]
+  a = std::remainder(a, kTwoPi);
+  return a <= -kPi ? a + kTwoPi : a;
+}
+
+// e1 of the spindle frame at axis a: world X made perpendicular to a, or world Y when a
+// is within 30 degrees of X.
+Vec3 referenceAcross(const Vec3& a) {
+  const Vec3 ref = std::abs(a.x) > 0.8660254037844386 ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
+  return normalize(ref - dot(ref, a) * a);
+}
+
+Vec3 mirrorZ(const Vec3& v) { return {v.x, v.y, -v.z}; }
+
+}  // namespace
+
+// One evaluation of the crossing function at t, for the entry point (side 0) and the
+// exit point (side 1).
+struct ToothSweep::Sample {
+  double t = 0;
+  double phi = 0;
+  bool envHit = false;  // the line meets the spindle envelope at pose(t)
+  double envZ = 0;      // h(t), mm
+  double envSlope = 0;  // a subgradient dh/dt (constant axis only), mm per unit t
+  bool slopeKnown = false;  // false where the normal is (nearly) horizontal
+  bool hit[2] = {false, false};  // the line meets the cutter at an edge-bearing face
+  double z[2] = {0, 0};          // E(t).z, X(t).z, mm
+  double theta[2] = {0, 0};      // their angles from e1, (-pi, pi]
+  double h[2] = {0, 0};          // their heights above the tip along the axis, mm
+  double normal0[3] = {0, 0, 0};
+};
+
+ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phaseStart,
+                       double phaseRate)
+    : cutter_(cutter),
+      envelope_(cutter.spindleEnvelope()),
+      curve_(curve),
+      phaseStart_(phaseStart),
+      phaseRate_(phaseRate) {
+  e1Start_ = referenceAcross(curve_.axis(0));
+  helixSlope_ = std::tan(cutter_.teeth.helixDeg * kPi / 180) / cutter_.radius;
+  runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
+}
+
+void ToothSweep::frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const {
+  a = curve_.axis(t);
+  e1 = curve_.constantAxis() ? e1Start_ : curve_.carry(e1Start_, 0, t);
+  e1 = normalize(e1 - dot(e1, a) * a);
+  e2 = cross(a, e1);
+}
+
+Vec3 ToothSweep::edgePoint(int k, double h, double rho, double t) const {
+  Vec3 a, e1, e2;
+  frame(t, a, e1, e2);
+  const double phi = phaseStart_ + phaseRate_ * t;
+  if (rho < 0) {
+    const double r = cutter_.cornerRadius, rb = cutter_.bottomRadius();
+    rho = h >= r ? cutter_.radius : rb + std::sqrt(std::max(0.0, r * r - (r - h) * (r - h)));
+  }
+  const double psi = kTwoPi * k / cutter_.teeth.flutes + h * helixSlope_ - phi;
+  const double psiR = runoutPhase_ - phi;
+  return curve_.tip(t) + cutter_.teeth.runout * (std::cos(psiR) * e1 + std::sin(psiR) * e2) +
+         rho * (std::cos(psi) * e1 + std::sin(psi) * e2) + h * a;
+}
+
+ToothSweep::Sample ToothSweep::sample(double t, double x, double y) const {
+  Sample s;
+  s.t = t;
+  s.phi = phaseStart_ + phaseRate_ * t;
+  Vec3 a, e1, e2;
+  frame(t, a, e1, e2);
+  const Vec3 tip = curve_.tip(t);
+  const LowestPoint env = cutterLowestPoint(envelope_, a, x - tip.x, y - tip.y);
+  s.envHit = env.hit;
+  if (!env.hit) return s;
+  s.envZ = env.z + tip.z;
+  if (env.normal.z < -1e-9) {
+    s.envSlope = dot(env.normal, curve_.tipVelocity(t)) / env.normal.z;
+    s.slopeKnown = true;
+  }
+  const double psiR = runoutPhase_ - s.phi;
+  const Vec3 T = tip + cutter_.teeth.runout * (std::cos(psiR) * e1 + std::sin(psiR) * e2);
+  const double capH = cutter_.fluteLength * (1 - 1e-12);
+  for (int side = 0; side < 2; ++side) {
+    LowestPoint lp;
+    if (side == 0 && cutter_.teeth.runout <= 0) {
+      lp = env;
+    } else if (side == 0) {
+      lp = cutterLowestPoint(cutter_, a, x - T.x, y - T.y);
+    } else {
+      // The exit point: the lowest point of the cutter mirrored in z (tip at the origin).
+      lp = cutterLowestPoint(cutter_, mirrorZ(a), x - T.x, y - T.y);
+      lp.z = -lp.z;
+    }
+    if (!lp.hit) continue;
+    const Vec3 q{x - T.x, y - T.y, lp.z};
+    const double h = dot(q, a);
+    if (h >= capH) continue;
+    const Vec3 across = q - h * a;
+    s.hit[side] = true;
+    s.z[side] = lp.z + T.z;
+    s.h[side] = h;
+    s.theta[side] = std::atan2(dot(across, e2), dot(across, e1));
+    if (side == 0) s.normal0[0] = lp.normal.x, s.normal0[1] = lp.normal.y, s.normal0[2] = lp.normal.z;
+  }
+  return s;
+}
+
+// F(b) - F(a) for one side, with theta unwrapped the short way (intervals are small).
+double ToothSweep::deltaF(const Sample& a, const Sample& b, int side) const {
+  const double dTheta = wrapAngle(b.theta[side] - a.theta[side]);
+  return cutter_.teeth.flutes * (dTheta + (b.phi - a.phi) - (b.h[side] - a.h[side]) * helixSlope_) /
+         kTwoPi;
+}
+
+double ToothSweep::absoluteF(const Sample& s, int side) const {
+  return cutter_.teeth.flutes * (s.theta[side] + s.phi - s.h[side] * helixSlope_) / kTwoPi;
+}
+
+// Whether F can be trusted to be monotone between a and b on this side: the piercing
+// point's angle moves by at most half of what the spindle turns.
+bool ToothSweep::calm(const Sample& a, const Sample& b, int side) const {
+  const double dTheta = std::abs(wrapAngle(b.theta[side] - a.theta[side])) +
+                        std::abs(b.h[side] - a.h[side]) * helixSlope_;
+  return dTheta <= 0.5 * std::abs(b.phi - a.phi);
+}
+
+// A lower bound of h over [a.t, b.t] where a pruning proof exists, else -inf.
+double ToothSweep::envelopeBound(const Sample& a, const Sample& b, double x, double y,
+                                 double best) const {
+  if (curve_.constantAxis()) {
+    if (!a.envHit || !b.envHit || !a.slopeKnown || !b.slopeKnown) return -HUGE_VAL;
+    // Two tangent lines of a convex function: their crossing is the lowest either
+    // allows (or an end, if they do not cross inside).
+    const double sa = a.envSlope, sb = b.envSlope, dt = b.t - a.t;
+    // The slack covers the rounding of h and its slope (~1e-12 mm).
+    const double slack = 1e-11 * (1 + std::abs(a.envZ) + std::abs(b.envZ));
+    if (sb - sa <= 1e-300) return std::min(a.envZ, b.envZ) - slack;
+    const double tc = std::clamp((b.envZ - a.envZ - sb * dt) / (sa - sb), 0.0, dt);
+    return std::min(std::min(a.envZ, b.envZ), a.envZ + sa * tc) - slack;
+  }
+  if (best == HUGE_VAL) return -HUGE_VAL;
+  return rayClearsMove(envelope_, curve_, Vec3{x, y, best}, 0.5 * (a.t + b.t), a.t, b.t)
+             ? best
+             : -HUGE_VAL;
+}
+
+// Solves F(t) - F(a) = target between a and b (0 < target <= F(b) - F(a), a and b in
+// either order of t) for one side, and keeps the crossing if it is the lowest so far.
+void ToothSweep::solveCrossing(const Sample& a, const Sample& b, int side, double target,
+                               double x, double y, Crossing& best) const {
+  Sample p = a, q = b;  // g(p) < 0 <= g(q), g = F - F(a) - target
+  double gp = -target, gq = deltaF(a, b, side) - target;
+  int stale = 0;  // Illinois: halve the end that stayed twice in a row
+  for (int step = 0; step < kSolveSteps && gq != 0; ++step) {
+    const double lo = std::min(p.t, q.t), hi = std::max(p.t, q.t);
+    double t = p.t + (q.t - p.t) * (gp / (gp - gq));
+    if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+    if (!(t > lo && t < hi)) break;  // the bracket is down to adjacent doubles
+    const Sample s = sample(t, x, y);
+    if (!s.hit[side]) break;  // the face ends inside: keep the bracket's ends
+    const double g = deltaF(a, s, side) - target;
+    if (g < 0) {
+      p = s, gp = g;
+      if (stale == -1) gq *= 0.5;
+      stale = -1;
+    } else {
+      q = s, gq = g;
+      if (stale == 1) gp *= 0.5;
+      stale = 1;
+    }
+  }
+  keep(std::abs(gp) < std::abs(gq) ? p : q, side, best);
+}
+
+void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
+  if (!s.hit[side] || !(s.z[side] < best.z)) return;
+  best.z = s.z[side];
+  best.t = s.t;
+  best.normal = side == 0 ? Vec3{s.normal0[0], s.normal0[1], s.normal0[2]} : Vec3{0, 0, -1};
+}
+
+// The crossings on [a, b]: halves the interval until F is calm on each side that meets
+// the cutter at both ends, then solves for every integer F passes.
+void ToothSweep::scanInterval(const Sample& a, const Sample& b, double x, double y, int depth,
+                              Crossing& best) const {
+  if (envelopeBound(a, b, x, y, best.z) >= best.z) return;
+  bool split = false;
+  for (int side = 0; side < 2; ++side) {
+    if (a.hit[side] != b.hit[side] || (a.hit[side] && !calm(a, b, side))) split = true;
+  }
+  if (split && depth < kMaxDepth && b.t - a.t > kMinInterval) {
+    const Sample mid = sample(0.5 * (a.t + b.t), x, y);
+    scanInterval(a, mid, x, y, depth + 1, best);
+    scanInterval(mid, b, x, y, depth + 1, best);
+    return;
+  }
+  for (int side = 0; side < 2; ++side) {
+    if (!a.hit[side] || !b.hit[side]) {
+      // An end of a face inside an interval of 1e-13: a crossing there is at either end.
+      if (a.hit[side] && std::floor(absoluteF(a, side)) == absoluteF(a, side)) keep(a, side, best);
+      continue;
+    }
+    // Exit crossings of a constant-axis cutter without runout lie no lower than the
+    // lower end (X(t).z is concave).
+    if (side == 1 && curve_.constantAxis() && cutter_.teeth.runout <= 0 &&
+        std::min(a.z[1], b.z[1]) >= best.z)
+      continue;
+    const double fa = absoluteF(a, side);
+    const double df = deltaF(a, b, side);
+    // Every integer m with fa < m <= fa + df (or the reverse for a decreasing F).
+    const double lo = std::min(fa, fa + df), hi = std::max(fa, fa + df);
+    for (double m = std::floor(lo) + 1; m <= hi; ++m) {
+      if (df > 0)
+        solveCrossing(a, b, side, m - fa, x, y, best);
+      else
+        solveCrossing(b, a, side, m - lo, x, y, best);
+    }
+    if (std::floor(fa) == fa) keep(a, side, best);
+  }
+}
+
+LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& envelope,
+                                       double cutoff) const {
+  LowestPoint miss;
+  if (!envelope.hit || !(envelope.z < cutoff) || !(phaseRate_ > 0)) return miss;
+  Crossing best{cutoff, 0, Vec3{0, 0, -1}};
+  // A quarter of a tooth period, in t.
+  const double step = 0.25 * kTwoPi / (cutter_.teeth.flutes * phaseRate_);
+  if (curve_.constantAxis()) {
+    // t* of the envelope's lowest point: the swept solid's support point in direction n
+    // is the cutter's support point plus a point of the tip's segment.
+    const Vec3 p0 = curve_.tipStart(), d = curve_.tipEnd() - p0;
+    const double dd = dot(d, d);
+    double tStar = 0;
+    if (dd > 0) {
+      const Vec3 onPath = Vec3{x, y, envelope.z} - cutterSupport(envelope_, curve_.axis(0),
+                                                                 envelope.normal);
+      tStar = std::clamp(dot(onPath - p0, d) / dd, 0.0, 1.0);
+    }
+    const Sample centre = sample(tStar, x, y);
+    // Outward in both directions, nearest intervals first, until h rises to the best.
+    Sample left = centre, right = centre;
+    bool goLeft = tStar > 0, goRight = tStar < 1;
+    while (goLeft || goRight) {
+      if (goRight) {
+        const Sample next = sample(std::min(1.0, right.t + step), x, y);
+        scanInterval(right, next, x, y, 0, best);
+        right = next;
+        goRight = next.t < 1 && next.envHit && next.envZ < best.z;
+      }
+      if (goLeft) {
+        const Sample next = sample(std::max(0.0, left.t - step), x, y);
+        scanInterval(next, left, x, y, 0, best);
+        left = next;
+        goLeft = next.t > 0 && next.envHit && next.envZ < best.z;
+      }
+    }
+  } else {
+    const int n = std::max(2, int(std::ceil(1 / step)));
+    Sample prev = sample(0, x, y);
+    for (int i = 1; i <= n; ++i) {
+      const Sample next = sample(double(i) / n, x, y);
+      scanInterval(prev, next, x, y, 0, best);
+      prev = next;
+    }
+  }
+  if (!(best.z < cutoff)) return miss;
+  LowestPoint out;
+  out.hit = true;
+  out.z = best.z;
+  out.normal = best.normal;
+  out.t = best.t;
+  return out;
+}
+
+}  // namespace scallop

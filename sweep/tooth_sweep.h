@@ -1,0 +1,74 @@
+// ToothSweep: the cutting edges of one move, and the lowest point at which any of them
+// crosses a vertical line (the "teeth" cutting model, cutting_model.h; derivation in
+// tooth_sweep.cpp and docs/algorithm.md "Teeth").
+//
+// Frames. At pose(t) the cutter's axis a(t); the spindle frame (e1(t), e2(t), a(t)) has
+// e1 = the world X axis made perpendicular to a(0) (world Y when a(0) is within 30
+// degrees of X), carried with the axis's rotation (PoseCurve::carry), e2 = a x e1. The
+// spindle turns clockwise seen from the shank (M3): a body angle b sits at angle
+// b - phi(t) from e1 towards e2, with phi(t) = phaseStart + phaseRate t (radians).
+// Tooth k's edge point at height h above the tip (radius rho(h) on the profile, or on
+// the flat bottom at radius rho <= Rb with h = 0) is, in the world,
+//     tip(t) + runout (cos(psi_r - phi) e1 + sin(psi_r - phi) e2)
+//            + rho (cos(psi_k + h tan(beta) / R - phi) e1 + sin(...) e2) + h a(t)
+// with psi_k = 2 pi k / flutes and psi_r the runout phase (CutterTeeth).
+#pragma once
+
+#include <cmath>
+
+#include "sweep/cutter.h"
+#include "sweep/pose_curve.h"
+#include "sweep/swept_segment.h"
+
+namespace scallop {
+
+class ToothSweep {
+ public:
+  // `cutter` carries its teeth; phi(t) = phaseStart + phaseRate t, radians. Moves whose
+  // tip is not linear (TCP-off machine moves) are refused by sweepToolPath.
+  ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phaseStart, double phaseRate);
+
+  // The lowest point on the vertical line through (x, y) that an edge of the move
+  // passes through, given the move's spindle-envelope height `envelope` there (a proven
+  // lower bound, SweptMove::lowestPoint of the envelope cutter). A crossing at or above
+  // `cutoff` may be reported as a miss; otherwise the height does not depend on it.
+  LowestPoint lowestCrossing(double x, double y, const LowestPoint& envelope,
+                             double cutoff = HUGE_VAL) const;
+
+  // Tooth k's edge point at height h (on the flat bottom: h = 0 and radius rho <= Rb;
+  // pass rho < 0 elsewhere to take the profile's), in the world, at t. For tests.
+  Vec3 edgePoint(int k, double h, double rho, double t) const;
+
+  const Cutter& cutter() const { return cutter_; }
+  double phaseStart() const { return phaseStart_; }
+  double phaseRate() const { return phaseRate_; }
+
+ private:
+  struct Sample;
+  struct Crossing {
+    double z;  // the lowest crossing so far (or the cutoff), mm
+    double t;
+    Vec3 normal;
+  };
+  void frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const;
+  Sample sample(double t, double x, double y) const;
+  double deltaF(const Sample& a, const Sample& b, int side) const;
+  double absoluteF(const Sample& s, int side) const;
+  bool calm(const Sample& a, const Sample& b, int side) const;
+  double envelopeBound(const Sample& a, const Sample& b, double x, double y, double best) const;
+  void scanInterval(const Sample& a, const Sample& b, double x, double y, int depth,
+                    Crossing& best) const;
+  void solveCrossing(const Sample& a, const Sample& b, int side, double target, double x,
+                     double y, Crossing& best) const;
+  void keep(const Sample& s, int side, Crossing& best) const;
+
+  Cutter cutter_;
+  Cutter envelope_;  // cutter_.spindleEnvelope()
+  PoseCurve curve_;
+  double phaseStart_ = 0, phaseRate_ = 0;
+  Vec3 e1Start_;             // e1 at t = 0
+  double helixSlope_ = 0;    // tan(beta) / R, rad per mm of height
+  double runoutPhase_ = 0;   // psi_r, rad
+};
+
+}  // namespace scallop
