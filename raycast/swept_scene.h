@@ -35,7 +35,7 @@ double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
                        const SceneOptions& options);
 
 struct SceneStats {
-  size_t segments = 0;  // swept moves (one primitive per cutting move)
+  size_t segments = 0;          // swept moves (one primitive per cutting move)
   size_t tiles = 0;             // Embree primitives
   size_t boundEvaluations = 0;  // exact evaluations spent on building the bounds
   double buildSeconds = 0;
@@ -56,7 +56,6 @@ class SweptScene {
     SectionMemo memo[kSlots];
     SectionMemo* memoFor(uint32_t segment, double y);
   };
-
 
   // The lowest height at (x, y) over all segments, or `ceiling` if none is lower.
   // `evaluations` is incremented by the number of exact evaluations made.
@@ -102,8 +101,8 @@ class SweptScene {
   // (UINT32_MAX if the ceiling was not beaten). The height does not depend on the hint
   // or the block, only the number of evaluations and bound tests does.
   double lowestHeightAmong(const std::vector<Candidate>& candidates,
-                           const std::vector<BlockEntry>& block, double x, double y,
-                           double ceiling, uint64_t& evaluations, QueryCache* cache = nullptr,
+                           const std::vector<BlockEntry>& block, double x, double y, double ceiling,
+                           uint64_t& evaluations, QueryCache* cache = nullptr,
                            uint32_t* hint = nullptr) const;
   double regionHalfSize() const { return regionHalfSize_; }
 

@@ -10,7 +10,7 @@
 namespace scallop {
 
 struct CastOptions {
-  int64_t tileCells = 64;    // cells per side of a parallel work item
+  int64_t tileCells = 64;  // cells per side of a parallel work item
   // Cells per side of a candidate region (one Embree ray each); 0: as many as the
   // scene's tiles were grown for (sceneOptionsFor: about 64 um a side, 8 to 32 cells).
   int64_t regionCells = 0;

@@ -94,8 +94,8 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
     for (SweptMove& m : out) {
       const Spindle& sp = spindle[i++];
       const double len = length(m.end() - m.start());
-      m.attachTeeth(std::make_shared<ToothSweep>(cutters[sp.tool], m.curve(),
-                                                 sp.phaseStart, sp.radPerMm * len));
+      m.attachTeeth(std::make_shared<ToothSweep>(cutters[sp.tool], m.curve(), sp.phaseStart,
+                                                 sp.radPerMm * len));
     }
   }
   return out;

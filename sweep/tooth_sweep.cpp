@@ -57,10 +57,13 @@ constexpr double kTwoPi = 2 * kPi;
 constexpr double kMinInterval = 1e-13;
 constexpr int kMaxDepth = 48;
 constexpr int kSolveSteps = 80;
+// The scan step, in tooth periods: F moves by about this much between samples.
+constexpr double kStepPeriods = 0.25;
 
-double wrapAngle(double a) {  // to (-pi, pi]
-  a = std::remainder(a, kTwoPi);
-  return a <= -kPi ? a + kTwoPi : a;
+double wrapAngle(double a) {  // to [-pi, pi] (the differences wrapped are below 4 pi)
+  while (a > kPi) a -= kTwoPi;
+  while (a < -kPi) a += kTwoPi;
+  return a;
 }
 
 // e1 of the spindle frame at axis a: world X made perpendicular to a, or world Y when a
@@ -70,24 +73,32 @@ Vec3 referenceAcross(const Vec3& a) {
   return normalize(ref - dot(ref, a) * a);
 }
 
-Vec3 mirrorZ(const Vec3& v) { return {v.x, v.y, -v.z}; }
+Vec3 mirrorZ(const Vec3& v) {
+  return {v.x, v.y, -v.z};
+}
 
 }  // namespace
 
-// One evaluation of the crossing function at t, for the entry point (side 0) and the
-// exit point (side 1).
+// The crossing function at t, evaluated lazily: the pose first, then the spindle
+// envelope's lowest point and each side (0 the entry point, 1 the exit point) when an
+// interval needs them.
 struct ToothSweep::Sample {
   double t = 0;
   double phi = 0;
-  bool envHit = false;  // the line meets the spindle envelope at pose(t)
-  double envZ = 0;      // h(t), mm
-  double envSlope = 0;  // a subgradient dh/dt (constant axis only), mm per unit t
+  Vec3 a, e1, e2;  // the spindle frame at t
+  Vec3 tip, T;     // the spindle's tip and the cutter's own (with the runout), mm
+  bool envDone = false;
+  bool envHit = false;      // the line meets the spindle envelope at pose(t)
+  double envZ = 0;          // h(t), mm
+  double envSlope = 0;      // a subgradient dh/dt (constant axis only), mm per unit t
   bool slopeKnown = false;  // false where the normal is (nearly) horizontal
+  Vec3 envNormal;
+  bool done[2] = {false, false};
   bool hit[2] = {false, false};  // the line meets the cutter at an edge-bearing face
   double z[2] = {0, 0};          // E(t).z, X(t).z, mm
   double theta[2] = {0, 0};      // their angles from e1, (-pi, pi]
   double h[2] = {0, 0};          // their heights above the tip along the axis, mm
-  double normal0[3] = {0, 0, 0};
+  Vec3 normal0;                  // the entry point's normal
 };
 
 ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phaseStart,
@@ -97,14 +108,20 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
       curve_(curve),
       phaseStart_(phaseStart),
       phaseRate_(phaseRate) {
-  e1Start_ = referenceAcross(curve_.axis(0));
+  axisStart_ = curve_.axis(0);
+  e1Start_ = referenceAcross(axisStart_);
+  e2Start_ = cross(axisStart_, e1Start_);
   helixSlope_ = std::tan(cutter_.teeth.helixDeg * kPi / 180) / cutter_.radius;
   runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
 }
 
 void ToothSweep::frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const {
+  if (curve_.constantAxis()) {
+    a = axisStart_, e1 = e1Start_, e2 = e2Start_;
+    return;
+  }
   a = curve_.axis(t);
-  e1 = curve_.constantAxis() ? e1Start_ : curve_.carry(e1Start_, 0, t);
+  e1 = curve_.carry(e1Start_, 0, t);
   e1 = normalize(e1 - dot(e1, a) * a);
   e2 = cross(a, e1);
 }
@@ -123,47 +140,101 @@ Vec3 ToothSweep::edgePoint(int k, double h, double rho, double t) const {
          rho * (std::cos(psi) * e1 + std::sin(psi) * e2) + h * a;
 }
 
-ToothSweep::Sample ToothSweep::sample(double t, double x, double y) const {
+ToothSweep::Sample ToothSweep::pose(double t) const {
   Sample s;
   s.t = t;
   s.phi = phaseStart_ + phaseRate_ * t;
-  Vec3 a, e1, e2;
-  frame(t, a, e1, e2);
-  const Vec3 tip = curve_.tip(t);
-  const LowestPoint env = cutterLowestPoint(envelope_, a, x - tip.x, y - tip.y);
-  s.envHit = env.hit;
-  if (!env.hit) return s;
-  s.envZ = env.z + tip.z;
-  if (env.normal.z < -1e-9) {
-    s.envSlope = dot(env.normal, curve_.tipVelocity(t)) / env.normal.z;
-    s.slopeKnown = true;
-  }
-  const double psiR = runoutPhase_ - s.phi;
-  const Vec3 T = tip + cutter_.teeth.runout * (std::cos(psiR) * e1 + std::sin(psiR) * e2);
-  const double capH = cutter_.fluteLength * (1 - 1e-12);
-  for (int side = 0; side < 2; ++side) {
-    LowestPoint lp;
-    if (side == 0 && cutter_.teeth.runout <= 0) {
-      lp = env;
-    } else if (side == 0) {
-      lp = cutterLowestPoint(cutter_, a, x - T.x, y - T.y);
-    } else {
-      // The exit point: the lowest point of the cutter mirrored in z (tip at the origin).
-      lp = cutterLowestPoint(cutter_, mirrorZ(a), x - T.x, y - T.y);
-      lp.z = -lp.z;
-    }
-    if (!lp.hit) continue;
-    const Vec3 q{x - T.x, y - T.y, lp.z};
-    const double h = dot(q, a);
-    if (h >= capH) continue;
-    const Vec3 across = q - h * a;
-    s.hit[side] = true;
-    s.z[side] = lp.z + T.z;
-    s.h[side] = h;
-    s.theta[side] = std::atan2(dot(across, e2), dot(across, e1));
-    if (side == 0) s.normal0[0] = lp.normal.x, s.normal0[1] = lp.normal.y, s.normal0[2] = lp.normal.z;
+  frame(t, s.a, s.e1, s.e2);
+  s.tip = curve_.tip(t);
+  s.T = s.tip;
+  if (cutter_.teeth.runout > 0) {
+    const double psiR = runoutPhase_ - s.phi;
+    s.T = s.T + cutter_.teeth.runout * (std::cos(psiR) * s.e1 + std::sin(psiR) * s.e2);
   }
   return s;
+}
+
+// A proven lower bound of h(t) from a sample's tangent line (h is convex in t for a
+// constant axis), which lets the stationary search start just below its answer.
+double ToothSweep::tangentBelow(const Sample* ref, double t) const {
+  if (!ref || !curve_.constantAxis() || !ref->envDone || !ref->envHit || !ref->slopeKnown)
+    return -HUGE_VAL;
+  const double z = ref->envZ + ref->envSlope * (t - ref->t);
+  return z - 1e-9 * (1 + std::abs(z));
+}
+
+void ToothSweep::needEnvelope(Sample& s, double x, double y, const Sample* near1,
+                              const Sample* near2) const {
+  if (s.envDone) return;
+  s.envDone = true;
+  const double below = std::max(tangentBelow(near1, s.t), tangentBelow(near2, s.t));
+  const LowestPoint env =
+      cutterLowestPoint(envelope_, s.a, x - s.tip.x, y - s.tip.y, below - s.tip.z);
+  s.envHit = env.hit;
+  if (!env.hit) return;
+  s.envZ = env.z + s.tip.z;
+  s.envNormal = env.normal;
+  if (env.normal.z < -1e-9) {
+    s.envSlope = dot(env.normal, curve_.tipVelocity(s.t)) / env.normal.z;
+    s.slopeKnown = true;
+  }
+}
+
+void ToothSweep::needSide(Sample& s, int side, double x, double y, const Sample* near1,
+                          const Sample* near2) const {
+  if (s.done[side]) return;
+  s.done[side] = true;
+  LowestPoint lp;
+  if (side == 0 && cutter_.teeth.runout <= 0) {
+    // Without runout the cutter is its own spindle envelope.
+    needEnvelope(s, x, y, near1, near2);
+    lp.hit = s.envHit;
+    lp.z = s.envZ - s.tip.z;
+    lp.normal = s.envNormal;
+  } else if (side == 0) {
+    lp = cutterLowestPoint(cutter_, s.a, x - s.T.x, y - s.T.y);
+  } else {
+    // The exit point: the lowest point of the cutter mirrored in z (tip at the origin).
+    lp = cutterLowestPoint(cutter_, mirrorZ(s.a), x - s.T.x, y - s.T.y);
+    lp.z = -lp.z;
+  }
+  if (!lp.hit) return;
+  const Vec3 q{x - s.T.x, y - s.T.y, lp.z};
+  const double h = dot(q, s.a);
+  if (h >= cutter_.fluteLength * (1 - 1e-12)) return;  // the top cap carries no edge
+  const Vec3 across = q - h * s.a;
+  s.hit[side] = true;
+  s.z[side] = lp.z + s.T.z;
+  s.h[side] = h;
+  s.theta[side] = std::atan2(dot(across, s.e2), dot(across, s.e1));
+  if (side == 0) s.normal0 = lp.normal;
+}
+
+// A lower bound of the exit height X(t).z: the top of the line's chord through the
+// straight part of the cutter, the cylinder of radius R about the axis between the
+// heights r and L above the tip, which the cutter contains. In closed form: with
+// w = z - T.z, the squared distance from the axis is A w^2 + B w + C (a quadratic) and
+// the height along the axis c + w a_z (linear). -inf where the line misses that part.
+double ToothSweep::exitLowerBound(const Sample& s, double x, double y) const {
+  const Vec3& a = s.a;
+  const double dx = x - s.T.x, dy = y - s.T.y;
+  const double c = dx * a.x + dy * a.y, R = cutter_.radius;
+  const double A = 1 - a.z * a.z, B = -2 * c * a.z, C = dx * dx + dy * dy - c * c - R * R;
+  if (!(a.z > 1e-9)) return -HUGE_VAL;
+  const double sLo = (cutter_.cornerRadius - c) / a.z, sHi = (cutter_.fluteLength - c) / a.z;
+  double w1 = -HUGE_VAL, w2 = HUGE_VAL;
+  if (A > 1e-15) {
+    const double disc = B * B - 4 * A * C;
+    if (!(disc >= 0)) return -HUGE_VAL;
+    const double root = std::sqrt(disc);
+    w1 = (-B - root) / (2 * A), w2 = (-B + root) / (2 * A);
+  } else if (C > 0) {
+    return -HUGE_VAL;  // a vertical axis: the line is outside the cylinder
+  }
+  const double top = std::min(w2, sHi);
+  if (!(top >= std::max(w1, sLo))) return -HUGE_VAL;
+  // The quadratic's rounding, relative to the sizes involved.
+  return s.T.z + top - 1e-9 * (1 + std::abs(top));
 }
 
 // F(b) - F(a) for one side, with theta unwrapped the short way (intervals are small).
@@ -186,9 +257,10 @@ bool ToothSweep::calm(const Sample& a, const Sample& b, int side) const {
 }
 
 // A lower bound of h over [a.t, b.t] where a pruning proof exists, else -inf.
-double ToothSweep::envelopeBound(const Sample& a, const Sample& b, double x, double y,
-                                 double best) const {
+double ToothSweep::envelopeBound(Sample& a, Sample& b, double x, double y, double best) const {
   if (curve_.constantAxis()) {
+    needEnvelope(a, x, y, &b);
+    needEnvelope(b, x, y, &a);
     if (!a.envHit || !b.envHit || !a.slopeKnown || !b.slopeKnown) return -HUGE_VAL;
     // Two tangent lines of a convex function: their crossing is the lowest either
     // allows (or an end, if they do not cross inside).
@@ -207,17 +279,22 @@ double ToothSweep::envelopeBound(const Sample& a, const Sample& b, double x, dou
 
 // Solves F(t) - F(a) = target between a and b (0 < target <= F(b) - F(a), a and b in
 // either order of t) for one side, and keeps the crossing if it is the lowest so far.
-void ToothSweep::solveCrossing(const Sample& a, const Sample& b, int side, double target,
-                               double x, double y, Crossing& best) const {
+// Regula falsi with the Illinois rule: F is nearly linear in t (the spindle turns at a
+// constant rate), so a few steps reach the bracket's last bits.
+void ToothSweep::solveCrossing(const Sample& a, const Sample& b, int side, double target, double x,
+                               double y, Crossing& best) const {
   Sample p = a, q = b;  // g(p) < 0 <= g(q), g = F - F(a) - target
   double gp = -target, gq = deltaF(a, b, side) - target;
   int stale = 0;  // Illinois: halve the end that stayed twice in a row
   for (int step = 0; step < kSolveSteps && gq != 0; ++step) {
     const double lo = std::min(p.t, q.t), hi = std::max(p.t, q.t);
+    // Converged: the ends' heights agree to 1e-13 mm within 1e-12 of t.
+    if (hi - lo < 1e-12 && std::abs(p.z[side] - q.z[side]) < 1e-13) break;
     double t = p.t + (q.t - p.t) * (gp / (gp - gq));
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     if (!(t > lo && t < hi)) break;  // the bracket is down to adjacent doubles
-    const Sample s = sample(t, x, y);
+    Sample s = pose(t);
+    needSide(s, side, x, y, &p, &q);
     if (!s.hit[side]) break;  // the face ends inside: keep the bracket's ends
     const double g = deltaF(a, s, side) - target;
     if (g < 0) {
@@ -237,35 +314,39 @@ void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
   if (!s.hit[side] || !(s.z[side] < best.z)) return;
   best.z = s.z[side];
   best.t = s.t;
-  best.normal = side == 0 ? Vec3{s.normal0[0], s.normal0[1], s.normal0[2]} : Vec3{0, 0, -1};
+  best.normal = side == 0 ? s.normal0 : Vec3{0, 0, -1};
 }
 
 // The crossings on [a, b]: halves the interval until F is calm on each side that meets
 // the cutter at both ends, then solves for every integer F passes.
-void ToothSweep::scanInterval(const Sample& a, const Sample& b, double x, double y, int depth,
+void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int depth,
                               Crossing& best) const {
   if (envelopeBound(a, b, x, y, best.z) >= best.z) return;
+  // Exit crossings of a constant-axis cutter without runout lie no lower than the lower
+  // end's exit height (X(t).z is concave in t), which the straight part bounds cheaply.
+  const bool exitLinear = curve_.constantAxis() && cutter_.teeth.runout <= 0;
+  const int sides =
+      exitLinear && std::min(exitLowerBound(a, x, y), exitLowerBound(b, x, y)) >= best.z ? 1 : 2;
   bool split = false;
-  for (int side = 0; side < 2; ++side) {
+  for (int side = 0; side < sides; ++side) {
+    needSide(a, side, x, y);
+    needSide(b, side, x, y);
     if (a.hit[side] != b.hit[side] || (a.hit[side] && !calm(a, b, side))) split = true;
   }
   if (split && depth < kMaxDepth && b.t - a.t > kMinInterval) {
-    const Sample mid = sample(0.5 * (a.t + b.t), x, y);
+    Sample mid = pose(0.5 * (a.t + b.t));
+    needEnvelope(mid, x, y, &a, &b);
     scanInterval(a, mid, x, y, depth + 1, best);
     scanInterval(mid, b, x, y, depth + 1, best);
     return;
   }
-  for (int side = 0; side < 2; ++side) {
+  for (int side = 0; side < sides; ++side) {
     if (!a.hit[side] || !b.hit[side]) {
       // An end of a face inside an interval of 1e-13: a crossing there is at either end.
       if (a.hit[side] && std::floor(absoluteF(a, side)) == absoluteF(a, side)) keep(a, side, best);
       continue;
     }
-    // Exit crossings of a constant-axis cutter without runout lie no lower than the
-    // lower end (X(t).z is concave).
-    if (side == 1 && curve_.constantAxis() && cutter_.teeth.runout <= 0 &&
-        std::min(a.z[1], b.z[1]) >= best.z)
-      continue;
+    if (side == 1 && exitLinear && std::min(a.z[1], b.z[1]) >= best.z) continue;
     const double fa = absoluteF(a, side);
     const double df = deltaF(a, b, side);
     // Every integer m with fa < m <= fa + df (or the reverse for a decreasing F).
@@ -285,8 +366,9 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
   LowestPoint miss;
   if (!envelope.hit || !(envelope.z < cutoff) || !(phaseRate_ > 0)) return miss;
   Crossing best{cutoff, 0, Vec3{0, 0, -1}};
-  // A quarter of a tooth period, in t.
-  const double step = 0.25 * kTwoPi / (cutter_.teeth.flutes * phaseRate_);
+  // The scan step, in t.
+  const double step = kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_);
+  bool scanWhole = !curve_.constantAxis();
   if (curve_.constantAxis()) {
     // t* of the envelope's lowest point: the swept solid's support point in direction n
     // is the cutter's support point plus a point of the tip's segment.
@@ -294,33 +376,45 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
     const double dd = dot(d, d);
     double tStar = 0;
     if (dd > 0) {
-      const Vec3 onPath = Vec3{x, y, envelope.z} - cutterSupport(envelope_, curve_.axis(0),
-                                                                 envelope.normal);
+      const Vec3 onPath =
+          Vec3{x, y, envelope.z} - cutterSupport(envelope_, curve_.axis(0), envelope.normal);
       tStar = std::clamp(dot(onPath - p0, d) / dd, 0.0, 1.0);
     }
-    const Sample centre = sample(tStar, x, y);
-    // Outward in both directions, nearest intervals first, until h rises to the best.
-    Sample left = centre, right = centre;
+    // Outward in both directions, nearest intervals first, until h has risen to the
+    // best crossing and still rises outward (a subgradient of that sign): h is convex,
+    // so beyond such a sample it stays higher. (t* is h's minimum to round-off; the
+    // slope test keeps the stop proven even where it is not.) The line meets the
+    // envelope on an interval of t that holds t*; leaving it ends the scan.
+    Sample left = pose(tStar);
+    needEnvelope(left, x, y);
+    Sample right = left;
     bool goLeft = tStar > 0, goRight = tStar < 1;
+    if (!left.envHit) goLeft = goRight = false, scanWhole = true;
+    auto risen = [&](const Sample& s, double sign) {
+      return !s.envHit || (s.envZ >= best.z && s.slopeKnown && sign * s.envSlope >= 0);
+    };
     while (goLeft || goRight) {
       if (goRight) {
-        const Sample next = sample(std::min(1.0, right.t + step), x, y);
+        Sample next = pose(std::min(1.0, right.t + step));
+        needEnvelope(next, x, y, &right);
         scanInterval(right, next, x, y, 0, best);
+        goRight = next.t < 1 && !risen(next, 1);
         right = next;
-        goRight = next.t < 1 && next.envHit && next.envZ < best.z;
       }
       if (goLeft) {
-        const Sample next = sample(std::max(0.0, left.t - step), x, y);
+        Sample next = pose(std::max(0.0, left.t - step));
+        needEnvelope(next, x, y, &left);
         scanInterval(next, left, x, y, 0, best);
+        goLeft = next.t > 0 && !risen(next, -1);
         left = next;
-        goLeft = next.t > 0 && next.envHit && next.envZ < best.z;
       }
     }
-  } else {
+  }
+  if (scanWhole) {
     const int n = std::max(2, int(std::ceil(1 / step)));
-    Sample prev = sample(0, x, y);
+    Sample prev = pose(0);
     for (int i = 1; i <= n; ++i) {
-      const Sample next = sample(double(i) / n, x, y);
+      Sample next = pose(double(i) / n);
       scanInterval(prev, next, x, y, 0, best);
       prev = next;
     }

@@ -51,24 +51,29 @@ class ToothSweep {
     Vec3 normal;
   };
   void frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const;
-  Sample sample(double t, double x, double y) const;
+  Sample pose(double t) const;
+  double tangentBelow(const Sample* ref, double t) const;
+  void needEnvelope(Sample& s, double x, double y, const Sample* near1 = nullptr,
+                    const Sample* near2 = nullptr) const;
+  void needSide(Sample& s, int side, double x, double y, const Sample* near1 = nullptr,
+                const Sample* near2 = nullptr) const;
+  double exitLowerBound(const Sample& s, double x, double y) const;
   double deltaF(const Sample& a, const Sample& b, int side) const;
   double absoluteF(const Sample& s, int side) const;
   bool calm(const Sample& a, const Sample& b, int side) const;
-  double envelopeBound(const Sample& a, const Sample& b, double x, double y, double best) const;
-  void scanInterval(const Sample& a, const Sample& b, double x, double y, int depth,
-                    Crossing& best) const;
-  void solveCrossing(const Sample& a, const Sample& b, int side, double target, double x,
-                     double y, Crossing& best) const;
+  double envelopeBound(Sample& a, Sample& b, double x, double y, double best) const;
+  void scanInterval(Sample& a, Sample& b, double x, double y, int depth, Crossing& best) const;
+  void solveCrossing(const Sample& a, const Sample& b, int side, double target, double x, double y,
+                     Crossing& best) const;
   void keep(const Sample& s, int side, Crossing& best) const;
 
   Cutter cutter_;
   Cutter envelope_;  // cutter_.spindleEnvelope()
   PoseCurve curve_;
   double phaseStart_ = 0, phaseRate_ = 0;
-  Vec3 e1Start_;             // e1 at t = 0
-  double helixSlope_ = 0;    // tan(beta) / R, rad per mm of height
-  double runoutPhase_ = 0;   // psi_r, rad
+  Vec3 axisStart_, e1Start_, e2Start_;  // the spindle frame at t = 0
+  double helixSlope_ = 0;               // tan(beta) / R, rad per mm of height
+  double runoutPhase_ = 0;              // psi_r, rad
 };
 
 }  // namespace scallop
