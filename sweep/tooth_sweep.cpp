@@ -21,7 +21,7 @@
 // whose angle theta moves by more than half of what phi does, or that straddles the
 // silhouette, is halved (down to 1e-13 in t). On the intervals left F is monotone, so
 // its integers between the end values are all its roots; each is solved by bracketed
-// regula falsi to the bracket's last bit.
+// regula falsi until F's residual times dz/dF is below 1e-13 mm.
 //
 // Which intervals matter. Every edge point lies in the spindle envelope (the solid of
 // revolution holding the cutter at every spindle angle), so a crossing at t is no lower
@@ -280,16 +280,15 @@ double ToothSweep::envelopeBound(Sample& a, Sample& b, double x, double y, doubl
 // Solves F(t) - F(a) = target between a and b (0 < target <= F(b) - F(a), a and b in
 // either order of t) for one side, and keeps the crossing if it is the lowest so far.
 // Regula falsi with the Illinois rule: F is nearly linear in t (the spindle turns at a
-// constant rate), so a few steps reach the bracket's last bits.
+// constant rate), so a few steps bring the height to 1e-13 mm.
 void ToothSweep::solveCrossing(const Sample& a, const Sample& b, int side, double target, double x,
                                double y, Crossing& best) const {
   Sample p = a, q = b;  // g(p) < 0 <= g(q), g = F - F(a) - target
   double gp = -target, gq = deltaF(a, b, side) - target;
-  int stale = 0;  // Illinois: halve the end that stayed twice in a row
+  double rawP = gp, rawQ = gq;  // g itself (gp, gq carry the Illinois halvings)
+  int stale = 0;                // Illinois: halve the end that stayed twice in a row
   for (int step = 0; step < kSolveSteps && gq != 0; ++step) {
     const double lo = std::min(p.t, q.t), hi = std::max(p.t, q.t);
-    // Converged: the ends' heights agree to 1e-13 mm within 1e-12 of t.
-    if (hi - lo < 1e-12 && std::abs(p.z[side] - q.z[side]) < 1e-13) break;
     double t = p.t + (q.t - p.t) * (gp / (gp - gq));
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     if (!(t > lo && t < hi)) break;  // the bracket is down to adjacent doubles
@@ -297,17 +296,24 @@ void ToothSweep::solveCrossing(const Sample& a, const Sample& b, int side, doubl
     needSide(s, side, x, y, &p, &q);
     if (!s.hit[side]) break;  // the face ends inside: keep the bracket's ends
     const double g = deltaF(a, s, side) - target;
+    // Converged when the height's error, |g| times dz/dF across the bracket, is below
+    // 1e-13 mm (F is nearly linear in t, so this comes after two or three steps).
+    const double dzdg = (q.z[side] - p.z[side]) / (rawQ - rawP);
+    if (g == 0 || std::abs(g * dzdg) < 1e-13) {
+      keep(s, side, best);
+      return;
+    }
     if (g < 0) {
-      p = s, gp = g;
+      p = s, gp = rawP = g;
       if (stale == -1) gq *= 0.5;
       stale = -1;
     } else {
-      q = s, gq = g;
+      q = s, gq = rawQ = g;
       if (stale == 1) gp *= 0.5;
       stale = 1;
     }
   }
-  keep(std::abs(gp) < std::abs(gq) ? p : q, side, best);
+  keep(std::abs(rawP) < std::abs(rawQ) ? p : q, side, best);
 }
 
 void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
