@@ -1,0 +1,201 @@
+// The teeth's premises (sweep/cutter.h CutterTeeth, sweep/tooth_sweep.h): validation of
+// the keys, the spindle envelope that bounds every edge point (the crossing search's
+// lower bound), the edges lying on the cutter's surface, and the spindle angle carried
+// along a path (sweepToolPath), rapids included.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "sweep/brute_force_reference.h"
+#include "sweep/constants.h"
+#include "sweep/cutter.h"
+#include "sweep/input_error.h"
+#include "sweep/tool_path_sweep.h"
+#include "sweep/tooth_sweep.h"
+
+namespace scallop {
+namespace {
+
+template <class F>
+void expectRejected(F&& make, const std::string& field) {
+  try {
+    make();
+    ADD_FAILURE() << "accepted, expected an InputError naming " << field;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+  }
+}
+
+TEST(CutterTeeth, MakeNamesTheFieldOfEachBadValue) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  expectRejected([] { CutterTeeth::make(0, 0, 0, 0, 3, "tools[1]"); }, "tools[1].flutes");
+  expectRejected([] { CutterTeeth::make(17, 0, 0, 0, 3); }, "tool.flutes");
+  expectRejected([] { CutterTeeth::make(2, -1, 0, 0, 3); }, "tool.helix_deg");
+  expectRejected([] { CutterTeeth::make(2, 61, 0, 0, 3); }, "tool.helix_deg");
+  expectRejected([&] { CutterTeeth::make(2, nan, 0, 0, 3); }, "tool.helix_deg");
+  expectRejected([] { CutterTeeth::make(2, 0, -0.001, 0, 3); }, "tool.runout_mm");
+  expectRejected([] { CutterTeeth::make(2, 0, 0.31, 0, 3); }, "tool.runout_mm");
+  expectRejected([&] { CutterTeeth::make(2, 0, 0, nan, 3); }, "tool.runout_phase_deg");
+  const CutterTeeth ok = CutterTeeth::make(4, 30, 0.01, -90, 3);
+  EXPECT_EQ(ok.flutes, 4);
+  EXPECT_EQ(ok.helixDeg, 30);
+  EXPECT_EQ(ok.runout, 0.01);
+  EXPECT_EQ(ok.runoutPhaseDeg, -90);
+}
+
+TEST(CutterTeeth, SpindleEnvelopePushesTheProfileOutByTheRunout) {
+  Cutter ball = Cutter::make(CutterType::Ball, 3);
+  EXPECT_EQ(ball.spindleEnvelope().radius, 3);  // no runout: the cutter itself
+  ball.teeth.runout = 0.02;
+  const Cutter env = ball.spindleEnvelope();
+  EXPECT_EQ(env.type, CutterType::Bull);
+  EXPECT_DOUBLE_EQ(env.radius, 3.02);
+  EXPECT_EQ(env.cornerRadius, 3);
+  EXPECT_EQ(env.fluteLength, ball.fluteLength);
+  Cutter flat = Cutter::make(CutterType::Flat, 2);
+  flat.teeth.runout = 0.01;
+  EXPECT_EQ(flat.spindleEnvelope().type, CutterType::Flat);
+  EXPECT_DOUBLE_EQ(flat.spindleEnvelope().radius, 2.01);
+}
+
+// Random cutters with teeth on random moves (tilted, some turning).
+struct ToothCase {
+  Cutter cutter;
+  PoseCurve curve;
+  double phaseStart, phaseRate;
+};
+
+ToothCase randomCase(std::mt19937& rng, int i) {
+  std::uniform_real_distribution<double> U(0, 1);
+  const int type = i % 3;
+  Cutter c = type == 0   ? Cutter::make(CutterType::Ball, 1 + 3 * U(rng))
+             : type == 1 ? Cutter::make(CutterType::Bull, 3, 0.3 + 2 * U(rng))
+                         : Cutter::make(CutterType::Flat, 1 + 3 * U(rng));
+  c.teeth = CutterTeeth::make(1 + i % 4, 45 * U(rng), c.radius / 10 * U(rng) * (i % 2),
+                              360 * U(rng), c.radius);
+  const double tilt0 = 1.2 * U(rng), tilt1 = tilt0 + (i % 4 == 3 ? 0.3 * U(rng) : 0);
+  const double az = 2 * kPi * U(rng);
+  const Vec3 a0 = ref::unitFromAngles(tilt0, az), a1 = ref::unitFromAngles(tilt1, az + 0.2);
+  const Vec3 p0{4 * U(rng), 4 * U(rng), U(rng)}, p1{4 * U(rng), 4 * U(rng), U(rng)};
+  const PoseCurve curve = PoseCurve::linear({p0, a0}, {p1, i % 4 == 3 ? a1 : a0});
+  return {c, curve, 2 * kPi * U(rng), 50 * U(rng)};
+}
+
+TEST(CutterTeeth, EveryEdgePointLiesOnTheCutterAndInsideTheSpindleEnvelope) {
+  std::mt19937 rng(18);
+  std::uniform_real_distribution<double> U(0, 1);
+  int checked = 0;
+  for (int i = 0; i < 200; ++i) {
+    const ToothCase tc = randomCase(rng, i);
+    const Cutter& c = tc.cutter;
+    const ToothSweep teeth(c, tc.curve, tc.phaseStart, tc.phaseRate);
+    const Cutter envCutter = c.spindleEnvelope();
+    const ref::RefCutter env = ref::makeRefCutter(envCutter.type, envCutter.radius,
+                                                  envCutter.cornerRadius, envCutter.fluteLength);
+    const ref::RefCutter own = ref::makeRefCutter(c.type, c.radius, c.cornerRadius, c.fluteLength);
+    for (int j = 0; j < 50; ++j) {
+      const double t = U(rng);
+      const int k = int(U(rng) * c.teeth.flutes) % c.teeth.flutes;
+      // A point on the flat bottom, or on the profile at a random height.
+      const bool bottom = j % 5 == 0 && c.bottomRadius() > 0;
+      const double h = bottom ? 0 : c.fluteLength * U(rng);
+      const double rho = bottom ? c.bottomRadius() * U(rng) : -1;
+      const Vec3 p = teeth.edgePoint(k, h, rho, t);
+      const Pose pose = tc.curve.pose(t);
+      // Inside the spindle envelope standing at pose(t): the search's lower bound.
+      EXPECT_TRUE(ref::inside(env, pose.tip, pose.axis, p, 1e-9)) << "case " << i << " " << j;
+      // On the cutter's own surface: inside it (standing where the runout puts it),
+      // and outside once pushed 1e-6 mm away from its axis.
+      const Vec3 runoutTip = teeth.edgePoint(k, 0, 0, t);  // the cutter's own axis point
+      EXPECT_TRUE(ref::inside(own, runoutTip, pose.axis, p, 1e-9)) << "case " << i << " " << j;
+      const Vec3 across = p - runoutTip - dot(p - runoutTip, pose.axis) * pose.axis;
+      if (!bottom && length(across) > 1e-6) {
+        EXPECT_FALSE(ref::inside(own, runoutTip, pose.axis, p + normalize(across) * 1e-6))
+            << "case " << i << " " << j;
+      }
+      ++checked;
+    }
+  }
+  std::printf("edge points checked: %d\n", checked);
+}
+
+// The spindle angle runs on along the path: a move's heights equal those of the same
+// move swept alone with phi0 = the angle the path reached at its start, rapids included.
+TEST(CutterTeeth, SpindleAngleRunsOnAlongThePathThroughRapids) {
+  Cutter c = Cutter::make(CutterType::Ball, 3);
+  const Vec3 axis = normalize(Vec3{std::sin(0.26), 0, std::cos(0.26)});
+  ToolPath path;
+  Move a;
+  a.from = {{-5, 0, 0}, axis};
+  a.to = {{0, 0, 0}, axis};
+  Move rapid;
+  rapid.rapid = true;
+  rapid.from = a.to;
+  rapid.to = {{0, 0.5, 2}, axis};
+  Move b;
+  b.from = {{0, 0.5, 2}, axis};
+  b.to = {{0, 0.5, 0.05}, axis};  // a plunge
+  Move d;
+  d.from = b.to;
+  d.to = {{6, 0.5, 0.05}, axis};
+  path.moves = {a, rapid, b, d};
+  CuttingModel cm;
+  cm.kind = CuttingModelKind::Teeth;
+  cm.feedPerTooth = 0.07;
+  cm.phaseDeg = 33;
+  const std::vector<SweptMove> moves = sweepToolPath(c, path, cm);
+  ASSERT_EQ(moves.size(), 3u);
+  // s at d's start: 5 + |rapid| + 1.95 mm; phi = phi0 + 2 pi s / (2 fz).
+  const double s = 5 + length(rapid.to.tip - rapid.from.tip) + 1.95;
+  ToolPath alone;
+  alone.moves = {d};
+  CuttingModel cmAlone = cm;
+  cmAlone.phaseDeg = std::fmod(33 + 360 * s / (2 * 0.07), 360);
+  const std::vector<SweptMove> single = sweepToolPath(c, alone, cmAlone);
+  double worst = 0;
+  int hits = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double x = 1 + 4.0 * i / 200, y = 0.5 + 0.3 * std::sin(i);
+    const LowestPoint p = moves[2].lowestPoint(x, y), q = single[0].lowestPoint(x, y);
+    ASSERT_EQ(p.hit, q.hit);
+    if (!p.hit) continue;
+    ++hits;
+    worst = std::max(worst, std::fabs(p.z - q.z));
+  }
+  EXPECT_GT(hits, 150);
+  // Both sum the same lengths; the angle's rounding (~1e-13 rad) moves heights by less.
+  EXPECT_LT(worst, 1e-9);
+  // A different phase gives different marks: the comparison can fail.
+  cmAlone.phaseDeg += 40;
+  const std::vector<SweptMove> shifted = sweepToolPath(c, alone, cmAlone);
+  double moved = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double x = 1 + 4.0 * i / 200, y = 0.5;
+    moved =
+        std::max(moved, std::fabs(moves[2].lowestPoint(x, y).z - shifted[0].lowestPoint(x, y).z));
+  }
+  EXPECT_GT(moved, 1e-5);
+}
+
+TEST(CutterTeeth, SweepRefusesMovesWithoutAFeedPerTooth) {
+  const Cutter c = Cutter::make(CutterType::Ball, 3);
+  ToolPath path;
+  Move m;
+  m.from = {{0, 0, 0}, {0, 0, 1}};
+  m.to = {{1, 0, 0}, {0, 0, 1}};
+  path.moves = {m, m};
+  path.moves[1].from.tip = {1, 0, 0}, path.moves[1].to.tip = {2, 1, 0};
+  path.moves[0].feedPerTooth = 0.1;  // the first carries its own, the second none
+  CuttingModel cm;
+  cm.kind = CuttingModelKind::Teeth;
+  expectRejected([&] { sweepToolPath(c, path, cm); }, "path move 2");
+  cm.feedPerTooth = 0.05;  // the job's feed serves the second
+  EXPECT_EQ(sweepToolPath(c, path, cm).size(), 2u);
+}
+
+}  // namespace
+}  // namespace scallop
