@@ -211,14 +211,17 @@ void ToothSweep::needSide(Sample& s, int side, double x, double y, const Sample*
 }
 
 // A lower bound of the exit height X(t).z: the top of the line's chord through the
-// straight part of the cutter, the cylinder of radius R about the axis between the
-// heights r and L above the tip, which the cutter contains. In closed form: with
-// w = z - T.z, the squared distance from the axis is A w^2 + B w + C (a quadratic) and
-// the height along the axis c + w a_z (linear). -inf where the line misses that part.
+// straight part of the cutter pulled in by the runout about the spindle axis (the
+// cylinder of radius R - runout between the heights r and L above the tip), which the
+// cutter holds at every spindle angle. That solid translates linearly with a constant
+// axis, so its exit height is concave in t: over an interval whose ends both meet it,
+// the cutter's exit points lie no lower than the lower of the ends' bounds. In closed
+// form: with w = z - tip.z, the squared distance from the axis is A w^2 + B w + C and
+// the height along the axis c + w a_z. -inf where the line misses that part.
 double ToothSweep::exitLowerBound(const Sample& s, double x, double y) const {
   const Vec3& a = s.a;
-  const double dx = x - s.T.x, dy = y - s.T.y;
-  const double c = dx * a.x + dy * a.y, R = cutter_.radius;
+  const double dx = x - s.tip.x, dy = y - s.tip.y;
+  const double c = dx * a.x + dy * a.y, R = cutter_.radius - cutter_.teeth.runout;
   const double A = 1 - a.z * a.z, B = -2 * c * a.z, C = dx * dx + dy * dy - c * c - R * R;
   if (!(a.z > 1e-9)) return -HUGE_VAL;
   const double sLo = (cutter_.cornerRadius - c) / a.z, sHi = (cutter_.fluteLength - c) / a.z;
@@ -234,7 +237,7 @@ double ToothSweep::exitLowerBound(const Sample& s, double x, double y) const {
   const double top = std::min(w2, sHi);
   if (!(top >= std::max(w1, sLo))) return -HUGE_VAL;
   // The quadratic's rounding, relative to the sizes involved.
-  return s.T.z + top - 1e-9 * (1 + std::abs(top));
+  return s.tip.z + top - 1e-9 * (1 + std::abs(top));
 }
 
 // F(b) - F(a) for one side, with theta unwrapped the short way (intervals are small).
@@ -328,11 +331,12 @@ void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
 void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int depth,
                               Crossing& best) const {
   if (envelopeBound(a, b, x, y, best.z) >= best.z) return;
-  // Exit crossings of a constant-axis cutter without runout lie no lower than the lower
-  // end's exit height (X(t).z is concave in t), which the straight part bounds cheaply.
-  const bool exitLinear = curve_.constantAxis() && cutter_.teeth.runout <= 0;
+  // Exit crossings of a constant-axis move lie no lower than the lower end's bound
+  // (exitLowerBound): then only the entry points are searched.
   const int sides =
-      exitLinear && std::min(exitLowerBound(a, x, y), exitLowerBound(b, x, y)) >= best.z ? 1 : 2;
+      curve_.constantAxis() && std::min(exitLowerBound(a, x, y), exitLowerBound(b, x, y)) >= best.z
+          ? 1
+          : 2;
   bool split = false;
   for (int side = 0; side < sides; ++side) {
     needSide(a, side, x, y);
@@ -352,7 +356,10 @@ void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int dept
       if (a.hit[side] && std::floor(absoluteF(a, side)) == absoluteF(a, side)) keep(a, side, best);
       continue;
     }
-    if (side == 1 && exitLinear && std::min(a.z[1], b.z[1]) >= best.z) continue;
+    // Without runout X(t).z itself is concave in t (the cutter translates linearly).
+    if (side == 1 && curve_.constantAxis() && cutter_.teeth.runout <= 0 &&
+        std::min(a.z[1], b.z[1]) >= best.z)
+      continue;
     const double fa = absoluteF(a, side);
     const double df = deltaF(a, b, side);
     // Every integer m with fa < m <= fa + df (or the reverse for a decreasing F).
