@@ -50,18 +50,20 @@ ZMap cropped(const ZMap& map, const CellRegion& region) {
 }
 
 int writeHillshade(const ExportArgs& args, const ZMap& map) {
+  auto given = [&args](const char* name) {
+    return std::find(args.hillshadeOnly.begin(), args.hillshadeOnly.end(), name) !=
+           args.hillshadeOnly.end();
+  };
   // NaN is how the picture asks for the automatic value: typed out, it is bad input.
-  if (std::isnan(args.exaggeration) &&
-      std::find(args.hillshadeOnly.begin(), args.hillshadeOnly.end(), "--exaggeration") !=
-          args.hillshadeOnly.end())
+  if (std::isnan(args.exaggeration) && given("--exaggeration"))
     throw InputError("--exaggeration", "must be a factor in (0, 1e6], got nan");
   HillshadeOptions options;
   options.light = args.light;
   options.exaggeration = args.exaggeration;
   options.colour = args.colour;
-  options.title = args.title.empty()
-                      ? "hill shade of " + std::filesystem::path(args.file).filename().string()
-                      : args.title;
+  options.title = given("--title")
+                      ? args.title
+                      : "hill shade of " + std::filesystem::path(args.file).filename().string();
   const CellRegion region = args.region.empty()
                                 ? wholeMap(map.grid())
                                 : regionOfRectangle(map.grid(), args.region[0], args.region[1],
@@ -170,7 +172,8 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
       app->add_option("--region", args->region, "x0 y0 x1 y1: only the cells in it, mm")
           ->expected(4)
           ->allow_extra_args(false),
-      app->add_option("--title", args->title, "Drawn above the map (default: the file's name)")};
+      app->add_option("--title", args->title,
+                      "Drawn above the map (default: the file's name; \"\": none)")};
   app->final_callback([app, args, options]() {
     for (CLI::Option* o : options)
       if (o->count() > 0) args->hillshadeOnly.push_back(o->get_name());
