@@ -96,7 +96,8 @@ double automaticTextureBoost(const Slopes& all, const Slopes& texture, double ex
   const double typical = form > 0 ? slopeQuantile(texture, 0.75, 0.01 * form) : 0.0;
   if (!(typical > 0)) return 1;
   const double factor = twoDigits(std::tan(10.0 * kDegree) / typical);
-  return std::clamp(factor / exaggeration, 1.0, 10.0);
+  const double boost = std::min(factor / exaggeration, 10.0);
+  return boost >= 2 ? boost : 1.0;  // less would hardly show, and take a legend line
 }
 
 Slopes boosted(const Slopes& all, const Slopes& texture, double boost) {

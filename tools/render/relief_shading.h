@@ -61,8 +61,9 @@ Slopes textureSlopes(const HeightRaster& raster, int radius);
 // that shows the scallops. The boost tilts the texture's typical facet (the 75th
 // percentile of its slopes steeper than 1% of the surface's typical slope, so that the
 // residue of smooth curvature does not count) to 10 degrees: the texture's factor,
-// exaggeration times boost, has two significant digits, and the boost is within
-// [1, 10]; 1 (no boost) when the texture already shows or there is none.
+// exaggeration times boost, has two significant digits, and the boost is at most 10;
+// 1 (no boost) when that would be less than 2 (the texture already shows) or there is
+// no texture.
 double automaticTextureBoost(const Slopes& all, const Slopes& texture, double exaggeration);
 
 // all + (boost - 1) texture: the slopes of the heights with their texture scaled by boost.
