@@ -49,7 +49,9 @@ std::pair<double, double> robustRange(const HeightRaster& p) {
 }
 
 Rgb shaded(Rgb c, double factor, double maxFactor) {
-  const double towardsWhite = factor > 1 ? 0.6 * (factor - 1) / (maxFactor - 1) : 0.0;
+  // maxFactor is 1 under a light straight above: then no facet is lit more than a floor.
+  const double towardsWhite =
+      factor > 1 && maxFactor > 1 ? 0.6 * (factor - 1) / (maxFactor - 1) : 0.0;
   auto s = [&](uint8_t v) {
     const double x = factor > 1 ? v + (255 - v) * towardsWhite : v * factor;
     return uint8_t(std::clamp(std::lround(x), 0L, 255L));
