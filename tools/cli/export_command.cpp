@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -9,12 +10,14 @@
 #include <vector>
 
 #include "analysis/profile_metrology.h"
+#include "analysis/surface_metrology.h"
 #include "sweep/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/file_names.h"
 #include "tools/io/height_export.h"
 #include "tools/io/height_images.h"
 #include "tools/io/x3p_writer.h"
+#include "tools/render/hillshade_png.h"
 
 namespace scallop {
 
@@ -24,21 +27,79 @@ struct ExportArgs {
   std::string file, to;
   std::vector<double> profile;
   double cutoffMm = 0.8, stepMm = 0;
+  // --hillshade and the options that go with it only.
+  bool hillshade = false, colour = false;
+  Light light;
+  double exaggeration = NAN;  // NaN: automatic
+  std::vector<double> region;
+  std::string title;
+  std::vector<std::string> hillshadeOnly;  // those of them given, for the usage check
 };
+
+// The cells of `region` as a map of their own (the same cell centres).
+ZMap cropped(const ZMap& map, const CellRegion& region) {
+  GridSpec g = map.grid();
+  g.offsetI += region.i0;
+  g.offsetJ += region.j0;
+  g.nx = region.i1 - region.i0;
+  g.ny = region.j1 - region.j0;
+  ZMap out(g, 0.0);
+  for (int64_t j = 0; j < g.ny; ++j)
+    for (int64_t i = 0; i < g.nx; ++i) out.at(i, j) = map.at(region.i0 + i, region.j0 + j);
+  return out;
+}
+
+int writeHillshade(const ExportArgs& args, const ZMap& map) {
+  auto given = [&args](const char* name) {
+    return std::find(args.hillshadeOnly.begin(), args.hillshadeOnly.end(), name) !=
+           args.hillshadeOnly.end();
+  };
+  // NaN is how the picture asks for the automatic value: typed out, it is bad input.
+  if (std::isnan(args.exaggeration) && given("--exaggeration"))
+    throw InputError("--exaggeration", "must be a factor in (0, 1e6], got nan");
+  HillshadeOptions options;
+  options.light = args.light;
+  options.exaggeration = args.exaggeration;
+  options.colour = args.colour;
+  options.title = given("--title")
+                      ? args.title
+                      : "hill shade of " + std::filesystem::path(args.file).filename().string();
+  const CellRegion region = args.region.empty()
+                                ? wholeMap(map.grid())
+                                : regionOfRectangle(map.grid(), args.region[0], args.region[1],
+                                                    args.region[2], args.region[3], "--region");
+  const double e =
+      writeHillshadePng(args.region.empty() ? map : cropped(map, region), args.to, options, "--");
+  std::fprintf(stderr, "scallop: wrote %s (%lld x %lld cells, heights x %g)\n", args.to.c_str(),
+               (long long)(region.i1 - region.i0), (long long)(region.j1 - region.j0), e);
+  return 0;
+}
+
+// The usage errors (exit 2) of --to, --profile and --hillshade; empty when none.
+std::string usageError(const ExportArgs& args, const std::string& ext) {
+  const bool known = ext == ".x3p" || ext == ".png" || ext == ".tif" || ext == ".tiff" ||
+                     ext == ".gsf" || ext == ".exr" || ext == ".csv";
+  if (!known)
+    return "--to: expected a file name ending in .x3p, .png, .tif, .tiff, .gsf, .exr or .csv";
+  if (ext == ".csv" && args.profile.empty())
+    return "--to .csv writes a profile: give --profile x0 y0 x1 y1";
+  if (ext != ".csv" && !args.profile.empty()) return "--profile goes with a .csv output only";
+  if (args.hillshade && ext != ".png")
+    return "--hillshade writes a picture: give --to a file name ending in .png";
+  if (!args.hillshade && !args.hillshadeOnly.empty())
+    return args.hillshadeOnly.front() + " goes with --hillshade only";
+  return "";
+}
 
 int runExport(const ExportArgs& args) {
   const std::string ext = lowerExtension(args.to);
-  const bool known = ext == ".x3p" || ext == ".png" || ext == ".tif" || ext == ".tiff" ||
-                     ext == ".gsf" || ext == ".exr" || ext == ".csv";
-  if (!known || (ext == ".csv") != !args.profile.empty()) {
-    std::fprintf(stderr, "scallop export: error: %s\n",
-                 !known ? "--to: expected a file name ending in .x3p, .png, .tif, .tiff, .gsf, "
-                          ".exr or .csv"
-                 : ext == ".csv" ? "--to .csv writes a profile: give --profile x0 y0 x1 y1"
-                                 : "--profile goes with a .csv output only");
+  const std::string usage = usageError(args, ext);
+  if (!usage.empty()) {
+    std::fprintf(stderr, "scallop export: error: %s\n", usage.c_str());
     return 2;
   }
   const ZMap map = readHeightFile(args.file);
+  if (args.hillshade) return writeHillshade(args, map);
   const std::string title = "scallop height map from " + args.file;
   if (ext == ".x3p") {
     writeHeightsX3p(map, args.to, title);
@@ -80,7 +141,13 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
       "  .gsf .exr    the simulate outputs' formats (conversion between them)\n"
       "  .csv         with --profile: distance_mm,x_mm,y_mm,z_mm,roughness_mm per sample\n"
       "               (roughness: ISO 16610-21 Gaussian filter of --cutoff, when the line is\n"
-      "               at least 3 cutoffs long; empty in the run-in and run-out)");
+      "               at least 3 cutoffs long; empty in the run-in and run-out)\n"
+      "With --hillshade, --to OUT.png is instead a picture for people: the surface lit as a\n"
+      "relief (Lambert light from --azimuth, --elevation), grey, or with --colour the\n"
+      "preview's colour map; heights exaggerated by --exaggeration (default: automatic, so\n"
+      "that micrometre scallops and feed marks show), the factor and the light in the\n"
+      "legend, with a scale bar; --region crops it. Maps larger than 1600 cells a side\n"
+      "are reduced (block minimum).");
   app->add_option("FILE", args->file, "Height map: .gsf or .exr")->required();
   app->add_option("--to", args->to, "Output file; its extension picks the format")->required();
   app->add_option("--profile", args->profile, "x0 y0 x1 y1: the profile line for .csv, mm")
@@ -89,6 +156,28 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
   app->add_option("--cutoff", args->cutoffMm, "Gaussian filter cutoff lc for .csv, mm")
       ->capture_default_str();
   app->add_option("--step", args->stepMm, "Profile sample spacing, mm (default: grid spacing)");
+  app->add_flag("--hillshade", args->hillshade,
+                "--to .png is a hill-shaded picture, not 16-bit heights");
+  CLI::Option* options[] = {
+      app->add_option("--azimuth", args->light.azimuthDeg,
+                      "Where the light comes from, degrees clockwise from north (+y)")
+          ->capture_default_str(),
+      app->add_option("--elevation", args->light.elevationDeg,
+                      "Light above the horizon, degrees, in (0, 90]")
+          ->capture_default_str(),
+      app->add_option("--exaggeration", args->exaggeration,
+                      "Vertical exaggeration, in (0, 1e6] (default: automatic)"),
+      app->add_flag("--colour,--color", args->colour,
+                    "Blend the preview's height colours (viridis) with the shading"),
+      app->add_option("--region", args->region, "x0 y0 x1 y1: only the cells in it, mm")
+          ->expected(4)
+          ->allow_extra_args(false),
+      app->add_option("--title", args->title,
+                      "Drawn above the map (default: the file's name; \"\": none)")};
+  app->final_callback([app, args, options]() {
+    for (CLI::Option* o : options)
+      if (o->count() > 0) args->hillshadeOnly.push_back(o->get_name());
+  });
   return {app, [args]() { return runExport(*args); }};
 }
 

@@ -5,6 +5,7 @@
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
@@ -126,6 +127,27 @@ std::string formatValue(double v, int decimals, const std::string& unit) {
   std::string s = fmt::format("{:.{}f}", v, decimals);
   if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // no "-0"
   return s + " " + unit;
+}
+
+ScaleBar scaleBarFor(double mmPerPx, int mapPx) {
+  const double mm = niceBelow(0.4 * mapPx * mmPerPx);
+  ScaleBar bar;
+  bar.px = std::max(1, int(std::lround(mm / mmPerPx)));
+  bar.label = mm >= 1 ? fmt::format("{:g} mm", mm) : fmt::format("{:g} \u00b5m", mm * 1000);
+  return bar;
+}
+
+int scaleBarWidth(const ScaleBar& bar, int scale) {
+  return bar.px + 10 + textWidth(bar.label, scale);
+}
+
+int drawScaleBar(Canvas& canvas, int x, int y, const ScaleBar& bar, int scale) {
+  const int textH = kCapHeightPx * scale;
+  canvas.fill(x, y + textH / 2 - 2, bar.px, 4, kInk);
+  canvas.fill(x, y, 2, textH, kInk);
+  canvas.fill(x + bar.px - 2, y, 2, textH, kInk);
+  canvas.text(x + bar.px + 10, y, bar.label, scale, kInk);
+  return scaleBarWidth(bar, scale);
 }
 
 void writePng(const Canvas& canvas, const std::string& path, const std::string& title) {

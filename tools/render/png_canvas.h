@@ -61,6 +61,19 @@ double niceBelow(double x);
 // v with `decimals` decimals and a unit ("-0" printed as "0").
 std::string formatValue(double v, int decimals, const std::string& unit);
 
+// The scale bar of a map drawn at `mmPerPx`: a round length (1, 2 or 5 x 10^k mm)
+// about 40% of the map's width `mapPx`, and its label in mm or µm.
+struct ScaleBar {
+  int px = 1;
+  std::string label;
+};
+ScaleBar scaleBarFor(double mmPerPx, int mapPx);
+// Draws the bar with end ticks, its label to the right, the top of the label's capitals
+// at y; returns the width drawn, px.
+int drawScaleBar(Canvas& canvas, int x, int y, const ScaleBar& bar, int scale);
+// The width drawScaleBar needs, px.
+int scaleBarWidth(const ScaleBar& bar, int scale);
+
 // Writes the canvas as an 8-bit RGB PNG, atomically (tools/io/atomic_file.h); `title`
 // goes into the ImageDescription. Throws InputError(path, ...).
 void writePng(const Canvas& canvas, const std::string& path, const std::string& title);

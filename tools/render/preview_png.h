@@ -1,13 +1,17 @@
 // preview.png: the picture of a height map for people, written by `simulate` beside
 // its height images (tools/io/height_images.h). 8-bit RGB: viridis colour map times
-// hill-shading (light from the north-west), a colour bar with height ticks and a scale
-// bar. North up, like the height images. Not meant to be read back.
+// hill shading (tools/render/relief_shading.h; light from the north-west, heights
+// exaggerated so that scallops show, and the fine texture more so that feed marks
+// show beside them, the factors in the legend), a
+// colour bar with height ticks and a scale bar. North up, like the height images. Not
+// meant to be read back.
 #pragma once
 
 #include <cmath>
 #include <string>
 
 #include "raycast/zmap.h"
+#include "tools/render/relief_shading.h"
 
 namespace scallop {
 
@@ -25,9 +29,17 @@ struct PreviewOptions {
   // map, see preview_png.cpp. The range comes from the picture's own cells, so a map
   // reduced before (a tiled run's min-pooled copy) gets the in-memory picture's range.
   double zMin = NAN, zMax = NAN;
+  Light light;
+  // Vertical exaggeration of the shading; NaN: automaticExaggeration of the (reduced)
+  // map's slopes.
+  double exaggeration = NAN;
+  // Extra exaggeration of the texture finer than 25 raster cells (feed marks beside
+  // scallops); NaN: automaticTextureBoost; 1: none, one exaggeration for everything.
+  double textureBoost = NAN;
 };
 
-void writePreviewPng(const ZMap& map, const std::string& path,
-                     const PreviewOptions& options = PreviewOptions());
+// Writes atomically; returns the vertical exaggeration of the shading.
+double writePreviewPng(const ZMap& map, const std::string& path,
+                       const PreviewOptions& options = PreviewOptions());
 
 }  // namespace scallop
