@@ -42,6 +42,7 @@
 #include "sweep/tooth_sweep.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "sweep/constants.h"
@@ -59,6 +60,12 @@ constexpr int kMaxDepth = 48;
 constexpr int kSolveSteps = 80;
 // The scan step, in tooth periods: F moves by about this much between samples.
 constexpr double kStepPeriods = 0.25;
+// Halvings one search may make. Where F's spindle term does not dominate over a whole
+// stretch (a slow spindle against a fast sweep of the piercing point), halving does not
+// make it so; past this budget such a search counts as unproven (unprovenSearches()).
+constexpr int kMaxSplits = 4096;
+
+std::atomic<unsigned long long> unprovenCount{0};
 
 double wrapAngle(double a) {  // to [-pi, pi] (the differences wrapped are below 4 pi)
   while (a > kPi) a -= kTwoPi;
@@ -113,6 +120,12 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
   e2Start_ = cross(axisStart_, e1Start_);
   helixSlope_ = std::tan(cutter_.teeth.helixDeg * kPi / 180) / cutter_.radius;
   runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
+  tipSpeed_ = length(curve_.tipEnd() - curve_.tipStart());
+  reach_ = std::hypot(cutter_.fluteLength, cutter_.radius) + cutter_.teeth.runout;
+}
+
+unsigned long long ToothSweep::unprovenSearches() {
+  return unprovenCount.load();
 }
 
 void ToothSweep::frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const {
@@ -210,21 +223,20 @@ void ToothSweep::needSide(Sample& s, int side, double x, double y, const Sample*
   if (side == 0) s.normal0 = lp.normal;
 }
 
-// A lower bound of the exit height X(t).z: the top of the line's chord through the
-// straight part of the cutter pulled in by the runout about the spindle axis (the
-// cylinder of radius R - runout between the heights r and L above the tip), which the
-// cutter holds at every spindle angle. That solid translates linearly with a constant
-// axis, so its exit height is concave in t: over an interval whose ends both meet it,
-// the cutter's exit points lie no lower than the lower of the ends' bounds. In closed
-// form: with w = z - tip.z, the squared distance from the axis is A w^2 + B w + C and
-// the height along the axis c + w a_z. -inf where the line misses that part.
-double ToothSweep::exitLowerBound(const Sample& s, double x, double y) const {
-  const Vec3& a = s.a;
-  const double dx = x - s.tip.x, dy = y - s.tip.y;
-  const double c = dx * a.x + dy * a.y, R = cutter_.radius - cutter_.teeth.runout;
+// A lower bound of the exit height X(t).z from a solid inside the cutter: the straight
+// flank's cylinder about the axis `a` through `tip`, of radius R - shrink between the
+// heights r + shrink and L - shrink above the tip. The top of the line's chord through
+// it is a point of the cutter on the line, so the exit is no lower. In closed form:
+// with w = z - tip.z, the squared distance from the axis is A w^2 + B w + C and the
+// height along the axis c + w a_z. -inf where the line misses that solid.
+double ToothSweep::exitLowerBound(const Vec3& tip, const Vec3& a, double shrink, double x,
+                                  double y) const {
+  const double dx = x - tip.x, dy = y - tip.y;
+  const double c = dx * a.x + dy * a.y, R = cutter_.radius - shrink;
   const double A = 1 - a.z * a.z, B = -2 * c * a.z, C = dx * dx + dy * dy - c * c - R * R;
-  if (!(a.z > 1e-9)) return -HUGE_VAL;
-  const double sLo = (cutter_.cornerRadius - c) / a.z, sHi = (cutter_.fluteLength - c) / a.z;
+  if (!(a.z > 1e-9) || !(R > 0)) return -HUGE_VAL;
+  const double sLo = (cutter_.cornerRadius + shrink - c) / a.z;
+  const double sHi = (cutter_.fluteLength - shrink - c) / a.z;
   double w1 = -HUGE_VAL, w2 = HUGE_VAL;
   if (A > 1e-15) {
     const double disc = B * B - 4 * A * C;
@@ -237,7 +249,29 @@ double ToothSweep::exitLowerBound(const Sample& s, double x, double y) const {
   const double top = std::min(w2, sHi);
   if (!(top >= std::max(w1, sLo))) return -HUGE_VAL;
   // The quadratic's rounding, relative to the sizes involved.
-  return s.tip.z + top - 1e-9 * (1 + std::abs(top));
+  return tip.z + top - 1e-9 * (1 + std::abs(top));
+}
+
+// A lower bound of every exit height X(t).z over [a.t, b.t]:
+//   * any move: every cutter point moves by at most delta = (|tip'| + omega reach) w / 2
+//     from its place at the middle pose, so the middle cutter eroded by delta (and by
+//     the runout, which the spindle turns) lies inside every cutter of the interval
+//     (a point whose delta-ball is in K(tm) is within delta of its own image), and
+//     so does the straight part of it;
+//   * a constant axis: the straight part pulled in by the runout alone translates
+//     linearly, so its exit height is concave in t and the lower of the ends' bounds
+//     holds between them (both ends meeting it, so does every t between).
+double ToothSweep::exitBound(const Sample& a, const Sample& b, double x, double y) const {
+  const double w = b.t - a.t;
+  const Sample mid = pose(0.5 * (a.t + b.t));
+  const double delta = (tipSpeed_ + curve_.turnRate() * reach_) * 0.5 * w * (1 + 1e-12) + 1e-12;
+  double bound = exitLowerBound(mid.tip, mid.a, delta + cutter_.teeth.runout, x, y);
+  if (curve_.constantAxis()) {
+    const double ends = std::min(exitLowerBound(a.tip, a.a, cutter_.teeth.runout, x, y),
+                                 exitLowerBound(b.tip, b.a, cutter_.teeth.runout, x, y));
+    bound = std::max(bound, ends);
+  }
+  return bound;
 }
 
 // F(b) - F(a) for one side, with theta unwrapped the short way (intervals are small).
@@ -252,11 +286,11 @@ double ToothSweep::absoluteF(const Sample& s, int side) const {
 }
 
 // Whether F can be trusted to be monotone between a and b on this side: the piercing
-// point's angle moves by at most half of what the spindle turns.
+// point's own turn (its angle less the helix's lag) is at most half of the spindle's.
 bool ToothSweep::calm(const Sample& a, const Sample& b, int side) const {
-  const double dTheta = std::abs(wrapAngle(b.theta[side] - a.theta[side])) +
-                        std::abs(b.h[side] - a.h[side]) * helixSlope_;
-  return dTheta <= 0.5 * std::abs(b.phi - a.phi);
+  const double own =
+      wrapAngle(b.theta[side] - a.theta[side]) - (b.h[side] - a.h[side]) * helixSlope_;
+  return std::abs(own) <= 0.5 * std::abs(b.phi - a.phi);
 }
 
 // A lower bound of h over [a.t, b.t] where a pruning proof exists, else -inf.
@@ -331,19 +365,22 @@ void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
 void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int depth,
                               Crossing& best) const {
   if (envelopeBound(a, b, x, y, best.z) >= best.z) return;
-  // Exit crossings of a constant-axis move lie no lower than the lower end's bound
-  // (exitLowerBound): then only the entry points are searched.
-  const int sides =
-      curve_.constantAxis() && std::min(exitLowerBound(a, x, y), exitLowerBound(b, x, y)) >= best.z
-          ? 1
-          : 2;
+  // Where the exit points are proven no lower than the best (exitBound), only the entry
+  // points are searched.
+  const int sides = exitBound(a, b, x, y) >= best.z ? 1 : 2;
   bool split = false;
   for (int side = 0; side < sides; ++side) {
     needSide(a, side, x, y);
     needSide(b, side, x, y);
     if (a.hit[side] != b.hit[side] || (a.hit[side] && !calm(a, b, side))) split = true;
   }
-  if (split && depth < kMaxDepth && b.t - a.t > kMinInterval) {
+  if (split && (depth >= kMaxDepth || b.t - a.t <= kMinInterval || best.splitsLeft <= 0)) {
+    // F is not shown monotone here: the roots below are those its end values show.
+    if (best.splitsLeft <= 0) best.unproven = true;
+    split = false;
+  }
+  if (split) {
+    --best.splitsLeft;
     Sample mid = pose(0.5 * (a.t + b.t));
     needEnvelope(mid, x, y, &a, &b);
     scanInterval(a, mid, x, y, depth + 1, best);
@@ -378,7 +415,7 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
                                        double cutoff) const {
   LowestPoint miss;
   if (!envelope.hit || !(envelope.z < cutoff) || !(phaseRate_ > 0)) return miss;
-  Crossing best{cutoff, 0, Vec3{0, 0, -1}};
+  Crossing best{cutoff, 0, Vec3{0, 0, -1}, kMaxSplits, false};
   // The scan step, in t.
   const double step = kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_);
   bool scanWhole = !curve_.constantAxis();
@@ -432,6 +469,7 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
       prev = next;
     }
   }
+  if (best.unproven) unprovenCount.fetch_add(1, std::memory_order_relaxed);
   if (!(best.z < cutoff)) return miss;
   LowestPoint out;
   out.hit = true;

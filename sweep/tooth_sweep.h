@@ -39,6 +39,11 @@ class ToothSweep {
   // pass rho < 0 elsewhere to take the profile's), in the world, at t. For tests.
   Vec3 edgePoint(int k, double h, double rho, double t) const;
 
+  // Searches, over all threads so far, whose halving budget ran out before every
+  // interval was shown monotone (their height is still a real crossing). Tests expect
+  // none on their cases.
+  static unsigned long long unprovenSearches();
+
   const Cutter& cutter() const { return cutter_; }
   double phaseStart() const { return phaseStart_; }
   double phaseRate() const { return phaseRate_; }
@@ -49,6 +54,8 @@ class ToothSweep {
     double z;  // the lowest crossing so far (or the cutoff), mm
     double t;
     Vec3 normal;
+    int splitsLeft;  // of the search's budget of halvings
+    bool unproven;   // the budget ran out before every interval was shown monotone
   };
   void frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const;
   Sample pose(double t) const;
@@ -57,7 +64,8 @@ class ToothSweep {
                     const Sample* near2 = nullptr) const;
   void needSide(Sample& s, int side, double x, double y, const Sample* near1 = nullptr,
                 const Sample* near2 = nullptr) const;
-  double exitLowerBound(const Sample& s, double x, double y) const;
+  double exitLowerBound(const Vec3& tip, const Vec3& a, double shrink, double x, double y) const;
+  double exitBound(const Sample& a, const Sample& b, double x, double y) const;
   double deltaF(const Sample& a, const Sample& b, int side) const;
   double absoluteF(const Sample& s, int side) const;
   bool calm(const Sample& a, const Sample& b, int side) const;
@@ -74,6 +82,8 @@ class ToothSweep {
   Vec3 axisStart_, e1Start_, e2Start_;  // the spindle frame at t = 0
   double helixSlope_ = 0;               // tan(beta) / R, rad per mm of height
   double runoutPhase_ = 0;              // psi_r, rad
+  double tipSpeed_ = 0;                 // |tip'|, mm per unit t (a linear tip)
+  double reach_ = 0;                    // the farthest edge point from the spindle tip, mm
 };
 
 }  // namespace scallop
