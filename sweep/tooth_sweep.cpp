@@ -374,8 +374,14 @@ void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int dept
     needSide(b, side, x, y);
     if (a.hit[side] != b.hit[side] || (a.hit[side] && !calm(a, b, side))) split = true;
   }
-  if (split && (depth >= kMaxDepth || b.t - a.t <= kMinInterval || best.splitsLeft <= 0)) {
-    // F is not shown monotone here: the roots below are those its end values show.
+  // Where the faces agree at both ends but F is not calm, halving stops at a leaf of
+  // 1/256 of a tooth period: there the piercing point sweeps round near the axis (every
+  // edge meets there, and F's end values show the crossing the sweep makes) or slides
+  // fast along a face, and the roots taken are those the end values show.
+  bool facesAgree = true;
+  for (int side = 0; side < sides; ++side) facesAgree = facesAgree && a.hit[side] == b.hit[side];
+  const double limit = facesAgree ? best.leaf : kMinInterval;
+  if (split && (depth >= kMaxDepth || b.t - a.t <= limit || best.splitsLeft <= 0)) {
     if (best.splitsLeft <= 0) best.unproven = true;
     split = false;
   }
@@ -415,9 +421,9 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
                                        double cutoff) const {
   LowestPoint miss;
   if (!envelope.hit || !(envelope.z < cutoff) || !(phaseRate_ > 0)) return miss;
-  Crossing best{cutoff, 0, Vec3{0, 0, -1}, kMaxSplits, false};
   // The scan step, in t.
   const double step = kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_);
+  Crossing best{cutoff, 0, Vec3{0, 0, -1}, kMaxSplits, false, step / 64};
   bool scanWhole = !curve_.constantAxis();
   if (curve_.constantAxis()) {
     // t* of the envelope's lowest point: the swept solid's support point in direction n

@@ -56,6 +56,7 @@ class ToothSweep {
     Vec3 normal;
     int splitsLeft;  // of the search's budget of halvings
     bool unproven;   // the budget ran out before every interval was shown monotone
+    double leaf;     // the shortest interval halved where the faces agree (in t)
   };
   void frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const;
   Sample pose(double t) const;
