@@ -34,9 +34,14 @@ Vec3 turnedAxis(std::mt19937_64& rng, const Vec3& a, double angle) {
   return normalize(a * std::cos(angle) + across * std::sin(angle));
 }
 
+// A third of each cutter type's moves turn.
+bool turning(int n) {
+  return (n / 3) % 3 == 2;
+}
+
 // Ball, bull, flat; 1 to 4 flutes; helix 0 to 45 degrees; runout 0 to R / 20 (half of
 // the cases) at any phase; the axis from vertical to 45 degrees; a third of the moves
-// turn by 10 to 20 degrees; feeds, ramps and steep ramps.
+// turn by 10 to 20 degrees about a random direction; feeds, ramps and steep ramps.
 RandomCase randomCase(std::mt19937_64& rng, int n) {
   std::uniform_real_distribution<double> u(0, 1);
   RandomCase rc;
@@ -51,7 +56,7 @@ RandomCase randomCase(std::mt19937_64& rng, int n) {
   const double polar = 0.25 * kPi * u(rng), azimuth = 2 * kPi * u(rng);
   rc.a0 = {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
            std::cos(polar)};
-  rc.a1 = n % 3 == 2 ? turnedAxis(rng, rc.a0, (10 + 10 * u(rng)) * kPi / 180) : rc.a0;
+  rc.a1 = turning(n) ? turnedAxis(rng, rc.a0, (10 + 10 * u(rng)) * kPi / 180) : rc.a0;
   const double len = 0.5 + 2 * u(rng), dir = 2 * kPi * u(rng);
   const double climb = n % 4 == 0 ? 0 : n % 4 == 3 ? len * (u(rng) - 0.5) : 0.2 * (u(rng) - 0.5);
   rc.p0 = {3 * (u(rng) - 0.5), 3 * (u(rng) - 0.5), -1 + u(rng)};
@@ -88,13 +93,15 @@ ref::ToothMove refMove(const RandomCase& rc) {
 
 // A point within the envelope's footprint: near the tip's path, inside the solid's
 // shadow (the envelope hits the line).
+// With `nearAxis`, within fz of the bottom's centre's path, where the edges' angle
+// about the line turns fastest.
 bool footprintPoint(std::mt19937_64& rng, const RandomCase& rc, const SweptMove& move, double& x,
-                    double& y) {
+                    double& y, bool nearAxis = false) {
   std::uniform_real_distribution<double> u(0, 1);
   for (int tries = 0; tries < 50; ++tries) {
-    const double t = u(rng), rho = rc.cutter.radius * 1.1 * std::sqrt(u(rng)),
-                 ang = 2 * kPi * u(rng);
-    const Vec3 tip = rc.p0 + (rc.p1 - rc.p0) * t + rc.a0 * (rc.cutter.cornerRadius);
+    const double t = u(rng), ang = 2 * kPi * u(rng);
+    const double rho = nearAxis ? rc.fz * u(rng) : rc.cutter.radius * 1.1 * std::sqrt(u(rng));
+    const Vec3 tip = rc.p0 + (rc.p1 - rc.p0) * t + rc.a0 * (nearAxis ? 0 : rc.cutter.cornerRadius);
     x = tip.x + rho * std::cos(ang);
     y = tip.y + rho * std::sin(ang);
     if (move.envelopeLowestPoint(x, y).hit) return true;
@@ -142,8 +149,9 @@ TEST(ToothSweep, EdgePointIsTheHeadersDefinition) {
 
 TEST(ToothSweep, RandomMovesAgreeWithTheReference) {
   std::mt19937_64 rng(2018);
-  int hits = 0, misses = 0, failures = 0, kinds[3] = {0, 0, 0};
-  double worst = 0, belowEnvelope = 0;
+  int hits = 0, misses = 0, failures = 0, kinds[3] = {0, 0, 0}, turns = 0;
+  const unsigned long long unprovenBefore = ToothSweep::unprovenSearches();
+  double worst = 0, closest = HUGE_VAL;
   ref::ToothStats stats;
   for (int n = 0; n < 120; ++n) {
     const RandomCase rc = randomCase(rng, n);
@@ -152,11 +160,11 @@ TEST(ToothSweep, RandomMovesAgreeWithTheReference) {
     ASSERT_EQ(moves.size(), 1u);
     const SweptMove& move = moves[0];
     ASSERT_NE(move.teeth(), nullptr);
-    EXPECT_EQ(move.turning(), n % 3 == 2);
+    EXPECT_EQ(move.turning(), turning(n));
     const ref::ToothMove m = refMove(rc);
     for (int q = 0; q < 3; ++q) {
       double x, y;
-      if (!footprintPoint(rng, rc, move, x, y)) continue;
+      if (!footprintPoint(rng, rc, move, x, y, q == 0)) continue;
       const LowestPoint got = move.lowestPoint(x, y);
       const ref::ToothHit want = ref::toothLowest(rc.cutter, m, x, y, &stats);
       if (got.hit != want.hit) {
@@ -172,6 +180,7 @@ TEST(ToothSweep, RandomMovesAgreeWithTheReference) {
       }
       ++hits;
       ++kinds[n % 3];
+      turns += turning(n);
       const double err = std::fabs(got.z - want.z);
       worst = std::max(worst, err);
       if (err > kHeightToleranceMm) {
@@ -184,17 +193,19 @@ TEST(ToothSweep, RandomMovesAgreeWithTheReference) {
       // The teeth cut no deeper than the envelope, their proven lower bound.
       const LowestPoint env = move.envelopeLowestPoint(x, y);
       ASSERT_TRUE(env.hit);
-      belowEnvelope = std::max(belowEnvelope, env.z - got.z);
+      closest = std::min(closest, got.z - env.z);
       EXPECT_GE(got.z, env.z - 1e-9) << "case " << n;
     }
   }
   std::printf(
-      "ToothSweep random: %d hits (ball %d, bull %d, flat turning %d), %d misses, %d "
-      "failures; worst |kernel - reference| = %.3g mm; most below the envelope %.3g mm; "
+      "ToothSweep random: %d hits (ball %d, bull %d, flat %d; %d turning), %d misses, %d "
+      "failures; worst |kernel - reference| = %.3g mm; least teeth - envelope %.3g mm; "
       "reference %ld cells, %ld near-crossings\n",
-      hits, kinds[0], kinds[1], kinds[2], misses, failures, worst, belowEnvelope, stats.cells,
+      hits, kinds[0], kinds[1], kinds[2], turns, misses, failures, worst, closest, stats.cells,
       stats.nearCrossings);
   EXPECT_GE(hits, 250);
+  EXPECT_GE(turns, 70);
+  EXPECT_EQ(ToothSweep::unprovenSearches(), unprovenBefore);
   EXPECT_EQ(stats.nearCrossings, 0);
 }
 
