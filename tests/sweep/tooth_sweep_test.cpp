@@ -211,6 +211,38 @@ TEST(ToothSweep, RandomMovesAgreeWithTheReference) {
   EXPECT_EQ(stats.nearCrossings, 0);
 }
 
+// Vertical cutters on lines near the tip's path, where every tooth passes close to the
+// line at its slowest and the edges' angle about the line turns faster than the spindle
+// (closer than about flutes fz / pi): the kernel's hardest lines in the most common pose.
+TEST(ToothSweep, VerticalCuttersNearThePath) {
+  const unsigned long long unprovenBefore = ToothSweep::unprovenSearches();
+  double worst = 0;
+  for (const Cutter& base :
+       {Cutter::make(CutterType::Ball, 3), Cutter::make(CutterType::Bull, 3, 1),
+        Cutter::make(CutterType::Flat, 3)}) {
+    Cutter c = base;
+    c.teeth = CutterTeeth::make(2, 0, 0, 0, 3);
+    RandomCase rc;
+    rc.cutter = c;
+    rc.p0 = {-4, 0, -0.1};
+    rc.p1 = {5, 0, -0.1};
+    rc.a0 = rc.a1 = {0, 0, 1};
+    rc.fz = 0.1;
+    const SweptMove move = sweepToolPath(c, onePath(rc), teethModel(rc.fz, 0))[0];
+    for (double y : {0.0, 0.001, 0.01, 0.03, 0.06, 0.11}) {
+      const double x = 0.31 + y;
+      const LowestPoint got = move.lowestPoint(x, y);
+      const ref::ToothHit want = ref::toothLowest(c, refMove(rc), x, y);
+      ASSERT_TRUE(got.hit && want.hit) << toString(c.type) << " " << y;
+      EXPECT_NEAR(got.z, want.z, kHeightToleranceMm) << toString(c.type) << " " << y;
+      worst = std::max(worst, std::fabs(got.z - want.z));
+    }
+  }
+  std::printf("ToothSweep vertical near the path: worst %.3g mm, %llu unproven searches\n", worst,
+              ToothSweep::unprovenSearches() - unprovenBefore);
+  EXPECT_EQ(ToothSweep::unprovenSearches(), unprovenBefore);
+}
+
 // Outside the envelope's footprint no edge reaches the line: a miss, for the kernel and
 // the reference alike.
 TEST(ToothSweep, MissOutsideTheFootprint) {
