@@ -27,7 +27,7 @@ struct FeedMarks {
   double meanSpacingMm = 0;
 };
 
-constexpr double kFeedMarkHysteresis = 0.05;
+constexpr double kFeedMarkHysteresis = 0.01;
 
 // Needs at least 3 samples and a positive step (otherwise: no valleys, PV of what is).
 FeedMarks measureFeedMarks(const Profile& profile, double hysteresis = kFeedMarkHysteresis);

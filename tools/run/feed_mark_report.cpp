@@ -1,5 +1,7 @@
 #include "tools/run/feed_mark_report.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,10 +21,13 @@ namespace {
 constexpr const char* kSampling =
     "every grid spacing along the line, each height the bilinear interpolation of the four "
     "surrounding cell centres";
-constexpr const char* kSpacingMethod =
-    "valleys: turning points with a hysteresis of 5% of the peak-to-valley, each refined by "
-    "the parabola through its sample and its two neighbours; spacing = (last - first) / "
-    "(valleys - 1)";
+std::string spacingMethod() {
+  return fmt::format(
+      "valleys: turning points with a hysteresis of {:g}% of the peak-to-valley, each refined "
+      "by the parabola through its sample and its two neighbours; spacing = (last - first) / "
+      "(valleys - 1)",
+      100 * kFeedMarkHysteresis);
+}
 
 struct Xy {
   double x, y;
@@ -201,7 +206,7 @@ json FeedMarkSampler::report() const {
   r["peak_to_valley_um"] = m.peakToValleyMm * 1e3;
   r["valleys"] = m.valleysMm.size();
   r["mean_spacing_mm"] = m.valleysMm.size() >= 2 ? json(m.meanSpacingMm) : json(nullptr);
-  r["spacing_method"] = kSpacingMethod;
+  r["spacing_method"] = spacingMethod();
   return r;
 }
 
