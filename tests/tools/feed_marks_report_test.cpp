@@ -79,6 +79,28 @@ TEST_F(FeedMarksReport, TheCentreLineShowsTheClosedFormsMarks) {
   EXPECT_FALSE(simulate(envelope).contains("feed_marks"));
 }
 
+// G-code feeds reach the teeth: fz = F / (S flutes) spaces the marks. The axis leans
+// 15 deg along the feed (a table-table machine with TCP on, B -15: a vertical axis under
+// teeth does not finish near its centre line yet, docs/teeth.md "Limits").
+TEST_F(FeedMarksReport, GcodeFeedsPerToothSpaceTheMarks) {
+  const std::string job = R"({"tool": {"type": "ball", "radius": 3},
+      "cutting": {"model": "teeth"}, "machine": {"kinematics": "xyzbc-trt"},
+      "stock": {"min": [0, -0.02, -2], "max": [0.8, 0.02, 0]}, "grid": {"spacing": 0.002},
+      "path": {"file": "p.nc"}})";
+  for (const double feed : {1200.0, 1500.0}) {
+    write("p.nc",
+          "G43.4\nS6000 M3\nG0 X-4 Y0 Z1 B-15 C0\nG1 Z-0.1 F" + std::to_string(feed) + "\nX5\n");
+    const json f = simulate(job).at("feed_marks");
+    const double fz = feed / (6000 * 2);
+    EXPECT_EQ(f.at("line").at("move"), 2) << f;  // X-4 -> X5, after the plunge
+    EXPECT_NEAR(f.at("mean_spacing_mm").get<double>(), fz, 1e-6) << feed;
+    const double h = circularMarkHeight(3, fz), slope = 0.5 * fz / std::sqrt(9 - 0.25 * fz * fz);
+    const double pv = f.at("peak_to_valley_um").get<double>() * 1e-3;
+    EXPECT_LE(pv, h + 2e-9) << feed;
+    EXPECT_GE(pv, h - slope * 0.001 - 2e-9) << feed;
+  }
+}
+
 TEST_F(FeedMarksReport, BandsGiveTheWholeMapsSection) {
   const json whole = simulate(kJob).at("feed_marks");
   // 20 rows in bands of 3: the line (between rows 9 and 10) spans two bands.
