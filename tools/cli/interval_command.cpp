@@ -43,13 +43,15 @@ void printFeedMarks(const IntervalComparison& c) {
   std::printf("  rho_f = %g mm (%s), marks %g mm apart (%s)\n", f.profileRadiusMm,
               c.cutter.type == CutterType::Ball ? "the ball's R" : "the corner radius r",
               f.spacingMm, f.regime.c_str());
-  std::printf("  h_f = %.6f um (circles: rho_f - sqrt(rho_f^2 - s^2/4)), %.6f um (s^2 / (8 "
-              "rho_f))\n",
-              f.heightMm * 1e3, f.heightParabolaMm * 1e3);
+  std::printf(
+      "  h_f = %.6f um (circles: rho_f - sqrt(rho_f^2 - s^2/4)), %.6f um (s^2 / (8 "
+      "rho_f))\n",
+      f.heightMm * 1e3, f.heightParabolaMm * 1e3);
   if (f.hasRunoutThreshold)
-    std::printf("  runout threshold rho* = %.6f um: above it one tooth cuts alone (marks 2 fz "
-                "apart)\n",
-                f.runoutThresholdMm * 1e3);
+    std::printf(
+        "  runout threshold rho* = %.6f um: above it one tooth cuts alone (marks 2 fz "
+        "apart)\n",
+        f.runoutThresholdMm * 1e3);
 }
 
 void printTable(const IntervalComparison& c) {
@@ -156,9 +158,10 @@ Command addIntervalCommand(CLI::App& parent, CommonOptions& common) {
       "(feed per minute / (rpm x flutes))");
   app->add_option("--flutes", args->flutes,
                   "Teeth of the cutter, 1-16 (default 2); the runout threshold needs 2");
-  app->add_option("--runout", args->runout,
-                  "Runout rho, mm, of tooth 0 towards the contact (0 <= rho <= R / 10; default 0):\n"
-                  "below rho* both teeth cut (their cusps by parabolic arcs), above it one");
+  app->add_option(
+      "--runout", args->runout,
+      "Runout rho, mm, of tooth 0 towards the contact (0 <= rho <= R / 10; default 0):\n"
+      "below rho* both teeth cut (their cusps by parabolic arcs), above it one");
   app->add_flag("--json", args->json, "Print one JSON document on stdout (and nothing else there)");
   addThreadsOption(*app, common);
   return {app, [args]() { return runInterval(*args); }};

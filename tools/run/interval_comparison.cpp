@@ -102,16 +102,17 @@ json toJson(const IntervalComparison& c) {
                   {"runout", c.cutter.teeth.runout},
                   {"applicable", f.applicable},
                   {"reason", f.reason},
-                  {"formula", "h_f = rho_f - sqrt(rho_f^2 - s^2 / 4) ~ s^2 / (8 rho_f), s the "
-                              "spacing; rho_f = R (ball) or r (bull)"},
+                  {"formula",
+                   "h_f = rho_f - sqrt(rho_f^2 - s^2 / 4) ~ s^2 / (8 rho_f), s the "
+                   "spacing; rho_f = R (ball) or r (bull)"},
                   {"source", "docs/teeth.md"}};
     marks["profile_radius"] = numberOrNull(f.applicable, f.profileRadiusMm);
     marks["spacing"] = numberOrNull(f.applicable, f.spacingMm);
     marks["height"] = numberOrNull(f.applicable, f.heightMm);
     marks["height_parabola"] = numberOrNull(f.applicable, f.heightParabolaMm);
     marks["regime"] = f.regime;
-    marks["runout_threshold"] = numberOrNull(f.applicable && f.hasRunoutThreshold,
-                                             f.runoutThresholdMm);
+    marks["runout_threshold"] =
+        numberOrNull(f.applicable && f.hasRunoutThreshold, f.runoutThresholdMm);
     doc["feed_marks"] = marks;
   }
   doc["units"] = {{"length", "mm"}, {"angle", "deg"}};
