@@ -21,6 +21,24 @@ using nlohmann::json;
 
 namespace {
 
+// The teeth model's feed marks (report.json "feed_marks", docs/teeth.md), one line.
+void printFeedMarks(const json& report) {
+  if (!report.contains("feed_marks")) return;
+  const json& f = report["feed_marks"];
+  if (!f.contains("line")) {
+    std::printf("feed marks: not measured: %s\n", f["reason"].get<std::string>().c_str());
+    return;
+  }
+  std::printf("feed marks along the pass centre line: %.4f um peak to valley",
+              f["peak_to_valley_um"].get<double>());
+  if (!f["mean_spacing_mm"].is_null())
+    std::printf(", %.5f mm apart", f["mean_spacing_mm"].get<double>());
+  if (f.contains("predicted"))
+    std::printf(" (closed form %.4f um, %g mm)", f["predicted"]["peak_to_valley_um"].get<double>(),
+                f["predicted"]["spacing_mm"].get<double>());
+  std::printf("\n");
+}
+
 // What `simulate` prints on stdout for people (--json prints the document instead).
 void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
   const json& d = outcome.document;
@@ -37,6 +55,7 @@ void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
                 g["nx"].get<long long>(), g["ny"].get<long long>(),
                 d["tiled"]["bands"].get<long long>(), m["min_height"].get<double>(),
                 m["max_height"].get<double>(), d["timings_s"]["total"].get<double>());
+    printFeedMarks(d);
     std::printf("wrote %s/heights.exr, heights.gsf, preview.png, report.json\n", outDir.c_str());
     return;
   }
@@ -48,6 +67,7 @@ void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
       d["timings_s"]["cast"].get<double>());
   if (m.contains("max_scallop_height"))
     std::printf("largest scallop between passes: %.6f mm\n", m["max_scallop_height"].get<double>());
+  printFeedMarks(d);
   namespace fs = std::filesystem;
   const fs::path dir(outDir);
   std::printf("wrote %s\n      %s\n      %s\n      %s\n", (dir / "heights.exr").c_str(),

@@ -38,9 +38,11 @@ InMemoryHeights computeHeights(const Job& job, const RunSettings& settings) {
   out.pathFile = job.isRaster ? json() : pathFileReport(job, settings.quiet);
   if (!settings.quiet)
     std::fprintf(stderr,
-                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
+                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g "
+                 "mm%s\n",
                  job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
-                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing);
+                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing,
+                 job.cutting.teeth() ? ", teeth" : "");
 
   SimulationOptions options;
   options.cast.progress = settings.progress;
