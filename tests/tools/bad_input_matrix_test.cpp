@@ -104,6 +104,84 @@ TEST_F(BadInputMatrix, JobFiles) {
   for (const BadInputRow& row : rows) check(row);
 }
 
+// The teeth model's keys (docs/formats.md "Cutting model"): the cutter's teeth and the
+// job's "cutting", and what the teeth refuse around the run.
+TEST_F(BadInputMatrix, TeethKeys) {
+  auto tool = [](const std::string& keys) { return replaced(kJob, "1.0}", "1.0, " + keys + "}"); };
+  auto cutting = [](const std::string& value) {
+    return replaced(kJob, "{\n", "{\"cutting\": " + value + ",\n");
+  };
+  const std::string teeth = R"({"model": "teeth", "feed_per_tooth": 0.1})";
+  const std::vector<BadInputRow> rows = {
+      jobRow("flutes a string", tool(R"("flutes": "two")"), {"tool.flutes", "whole number"}),
+      jobRow("flutes a boolean", tool(R"("flutes": true)"), {"tool.flutes", "whole number"}),
+      jobRow("flutes zero", tool(R"("flutes": 0)"), {"tool.flutes", "1 to 16"}),
+      jobRow("flutes 17", tool(R"("flutes": 17)"), {"tool.flutes", "1 to 16"}),
+      jobRow("flutes not whole", tool(R"("flutes": 2.5)"), {"tool.flutes", "whole number"}),
+      jobRow("helix a string", tool(R"("helix_deg": "30")"), {"tool.helix_deg", "number"}),
+      jobRow("helix beyond 60 deg", tool(R"("helix_deg": 61)"), {"tool.helix_deg", "60"}),
+      jobRow("negative helix", tool(R"("helix_deg": -1)"), {"tool.helix_deg"}),
+      jobRow("negative runout", tool(R"("runout_mm": -0.01)"), {"tool.runout_mm"}),
+      jobRow("runout beyond R / 10", tool(R"("runout_mm": 0.2)"), {"tool.runout_mm", "0.1"}),
+      jobRow("runout phase a string", tool(R"("runout_phase_deg": "up")"),
+             {"tool.runout_phase_deg", "number"}),
+      jobRow("cutting not an object", cutting("\"teeth\""), {"cutting", "object"}),
+      jobRow("unknown cutting model", cutting(R"({"model": "saw"})"),
+             {"cutting.model", "envelope", "teeth"}),
+      jobRow("cutting model a number", cutting(R"({"model": 2})"), {"cutting.model", "string"}),
+      jobRow("cutting unknown key", cutting(R"({"model": "teeth", "rpm": 9000})"),
+             {"cutting.rpm", "unknown key"}),
+      jobRow("zero feed per tooth", cutting(R"({"model": "teeth", "feed_per_tooth": 0})"),
+             {"cutting.feed_per_tooth", "> 0"}),
+      jobRow("negative feed per tooth", cutting(R"({"model": "teeth", "feed_per_tooth": -0.1})"),
+             {"cutting.feed_per_tooth", "> 0"}),
+      jobRow("feed per tooth a string", cutting(R"({"model": "teeth", "feed_per_tooth": "0.1"})"),
+             {"cutting.feed_per_tooth", "number"}),
+      jobRow("phase a string", cutting(R"({"model": "teeth", "phase_deg": "0"})"),
+             {"cutting.phase_deg", "number"}),
+      jobRow("teeth without a feed per tooth", cutting(R"({"model": "teeth"})"),
+             {"job.json: cutting.feed_per_tooth", "missing"}),
+      jobRow("stamping with teeth", cutting(teeth), {"--method", "teeth"}, " --method stamp"),
+      {"G-code without S for teeth",
+       {{"job.json", replaced(kFileJob, "{\n", "{\"cutting\": {\"model\": \"teeth\"},\n")},
+        {"p.nc", "G0 X0 Y0 Z1\nG1 Z-0.2 F300\nX1\n"}},
+       "simulate @/job.json -o @/out --path @/p.nc",
+       1,
+       {"cutting.feed_per_tooth", "p.nc:2"}},
+      {"G-code negative spindle speed with teeth",
+       {{"job.json", cutting(teeth)}, {"p.nc", "G0 X0 Y0 Z1\nS-100\nG1 Z-0.2 F300\n"}},
+       "simulate @/job.json -o @/out --path @/p.nc",
+       1,
+       {"p.nc:2", "S-100"}},
+      {"interval: zero feed per tooth",
+       {},
+       "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth 0",
+       1,
+       {"--feed-per-tooth", "> 0"}},
+      {"interval: NaN feed per tooth",
+       {},
+       "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth nan",
+       1,
+       {"--feed-per-tooth"}},
+      {"interval: zero flutes",
+       {},
+       "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth 0.1 --flutes 0",
+       1,
+       {"--flutes", "1 to 16"}},
+      {"interval: runout beyond R / 10",
+       {},
+       "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth 0.1 --runout 1",
+       1,
+       {"--runout", "0.3"}},
+      {"interval: flutes not a number",
+       {},
+       "interval --tool ball --radius 3 --scallop 0.01 --flutes two",
+       2,
+       {"--flutes"}},
+  };
+  for (const BadInputRow& row : rows) check(row);
+}
+
 BadInputRow pathRow(const std::string& name, const std::string& text,
                     std::vector<std::string> mentions) {
   return {name,
@@ -155,7 +233,8 @@ TEST_F(BadInputMatrix, ToolPathFiles) {
       pathRow("words", "0 0 -0.2\nGOTO the shop\n", {"part.txt:2"}),
       pathRow("axis below the horizontal", "0 0 -0.2 0 0 1\n1 0 -0.2 0.6 0 -0.8\n",
               {"part.txt:2", "below the horizontal", "k >= 0"}),
-      pathRow("APT: axis below the horizontal", "p.apt", "GOTO/0,0,-0.2,0,0,1\nGOTO/1,0,-0.2,0,0.6,-0.8\n",
+      pathRow("APT: axis below the horizontal", "p.apt",
+              "GOTO/0,0,-0.2,0,0,1\nGOTO/1,0,-0.2,0,0.6,-0.8\n",
               {"p.apt:2", "below the horizontal"}),
       {"path file missing",
        {{"job.json", kFileJob}},

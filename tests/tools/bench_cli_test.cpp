@@ -51,6 +51,42 @@ TEST_F(BenchCli, TableOnStdoutAndUsageErrors) {
   EXPECT_EQ(run("bench --area -1").status, 2);
 }
 
+// B5 is B1 with teeth, timed beside the envelope on its grid; its heights are those of
+// simulate() with its cutting model, and --quick keeps it to a 4 mm square.
+TEST_F(BenchCli, B5IsB1WithTeethBesideTheEnvelope) {
+  const CliRun r = run("bench --quick --case B5 --area 1 --no-stamp --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  ASSERT_EQ(doc["cases"].size(), 1u);
+  const nlohmann::json& c = doc["cases"][0];
+  EXPECT_EQ(c["name"], "B5");
+  EXPECT_EQ(c["cutting"], "teeth");
+  EXPECT_GT(c["envelope_seconds"].get<double>(), 0);
+  EXPECT_EQ(c["teeth_over_envelope"].get<double>(),
+            c["seconds"].get<double>() / c["envelope_seconds"].get<double>());
+  BenchCaseOptions options;
+  options.quick = true;
+  options.area = 1;
+  const BenchCase b = makeBenchCase("B5", options);
+  ASSERT_TRUE(b.cutting.teeth());
+  EXPECT_EQ(b.cutting.feedPerTooth, 0.1);
+  EXPECT_EQ(b.cutter.teeth.flutes, 2);
+  SimulationOptions teeth;
+  teeth.cutting = b.cutting;
+  EXPECT_EQ(
+      c["heights_hash"].get<std::string>(),
+      fmt::format("{:016x}", heightsHash(simulate(b.cutter, b.path, b.stock, b.grid, teeth).map)));
+  // B1's raster, stock and grid; quick: a 4 mm square, not B1's 20 mm.
+  const BenchCase b1 = makeBenchCase("B1", options);
+  EXPECT_EQ(b.grid.cells(), b1.grid.cells());
+  EXPECT_EQ(b.path.moves.size(), b1.path.moves.size());
+  options.area = 0;
+  EXPECT_EQ(makeBenchCase("B5", options).stock.max.x, 4);
+  EXPECT_EQ(makeBenchCase("B1", options).stock.max.x, 20);
+  options.quick = false;
+  EXPECT_EQ(makeBenchCase("B5", options).grid.cells(), makeBenchCase("B1", options).grid.cells());
+}
+
 // B3 is the freeform path as CAM writes it: CL text read back through the CL-text
 // reader, with the axis of every CL point, so the axis turns inside every move; B3c
 // has the same tips with one axis per move. Both run along +X at a constant y with tips

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -136,6 +137,45 @@ TEST_F(IntervalCli, TableForPeople) {
   for (const char* word : {"--tool", "--radius", "--corner-radius", "--lead", "--tilt", "--scallop",
                            "--json", "--threads", "mm", "deg"})
     EXPECT_NE(help.out.find(word), std::string::npos) << word;
+}
+
+// --feed-per-tooth adds the feed marks' closed form (docs/teeth.md), computed here from
+// the circle and the threshold's defining equality.
+TEST_F(IntervalCli, FeedMarksBesideTheInterval) {
+  const json ball = runJson("--tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth 0.1");
+  const json& f = ball.at("feed_marks");
+  EXPECT_EQ(f["applicable"], true);
+  EXPECT_EQ(f["profile_radius"], 3.0);
+  EXPECT_EQ(f["spacing"], 0.1);
+  EXPECT_NEAR(f["height"].get<double>(), 3 - std::sqrt(9 - 0.0025), 1e-15);
+  EXPECT_NEAR(f["height_parabola"].get<double>(), 0.01 / 24, 1e-18);
+  const double star = f["runout_threshold"].get<double>(), l = 15 * M_PI / 180;
+  EXPECT_NEAR(2 * star * std::sin(l),
+              (0.01 - 4 * star * star * std::cos(l) * std::cos(l)) / (2 * 3), 1e-15);
+  // A bull's marks are its corner's; above the threshold one tooth cuts, 2 fz apart.
+  const json bull = runJson(
+      "--tool bull --radius 5 --corner-radius 1 --lead 10 --scallop 0.01 --feed-per-tooth 0.1 "
+      "--runout 0.02");
+  EXPECT_EQ(bull["feed_marks"]["profile_radius"], 1.0);
+  EXPECT_EQ(bull["feed_marks"]["regime"], "one tooth cuts");
+  EXPECT_EQ(bull["feed_marks"]["spacing"], 0.2);
+  EXPECT_NEAR(bull["feed_marks"]["height"].get<double>(), 1 - std::sqrt(1 - 0.01), 1e-15);
+  // Where the formula does not apply it says why; without fz there is no section.
+  for (const char* args : {"--tool flat --radius 3 --lead 15", "--tool ball --radius 3"}) {
+    const json no = runJson(std::string(args) + " --scallop 0.01 --feed-per-tooth 0.1");
+    EXPECT_EQ(no["feed_marks"]["applicable"], false) << args;
+    EXPECT_FALSE(no["feed_marks"]["reason"].get<std::string>().empty()) << args;
+    EXPECT_TRUE(no["feed_marks"]["height"].is_null()) << args;
+  }
+  EXPECT_FALSE(runJson("--tool ball --radius 3 --scallop 0.01").contains("feed_marks"));
+  const CliRun table =
+      run("interval --tool ball --radius 3 --lead 15 --scallop 0.01 "
+          "--feed-per-tooth 0.1");
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "h_f = %.6f um", f["height"].get<double>() * 1e3);
+  EXPECT_NE(table.out.find(expected), std::string::npos) << expected << "\n" << table.out;
+  std::snprintf(expected, sizeof expected, "rho* = %.6f um", star * 1e3);
+  EXPECT_NE(table.out.find(expected), std::string::npos) << expected << "\n" << table.out;
 }
 
 TEST_F(IntervalCli, BadValuesExitOneNamingTheOption) {

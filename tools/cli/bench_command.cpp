@@ -58,13 +58,16 @@ struct ExactRun {
   uint64_t hash = 0;
 };
 
-// One timed simulate() in an arena of `threads` workers: exactly the `simulate` path.
-ExactRun runExact(const BenchCase& b, int threads) {
+// One timed simulate() in an arena of `threads` workers: exactly the `simulate` path,
+// with the case's cutting model or (`envelope`) the envelope's.
+ExactRun runExact(const BenchCase& b, int threads, bool envelope = false) {
   ExactRun r;
-  ProgressBar bar(fmt::format("{} ({} thread{})", b.name, threads, threads == 1 ? "" : "s"));
+  ProgressBar bar(fmt::format("{}{} ({} thread{})", b.name, envelope ? " envelope" : "", threads,
+                              threads == 1 ? "" : "s"));
   tbb::task_arena arena(threads);
   arena.execute([&] {
     SimulationOptions options;
+    if (!envelope) options.cutting = b.cutting;
     options.cast.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
     const auto t0 = Clock::now();
     const SimulationResult sim = simulate(b.cutter, b.path, b.stock, b.grid, options);
@@ -173,6 +176,7 @@ StampComparison compareWithStamping(const BenchCase& b, double side, int threads
 struct CaseResult {
   BenchCase bench;
   ExactRun timed, single;
+  ExactRun envelope;  // a teeth case's grid and path with the envelope (B5: B1's raster)
   int threads = 0;
   double peakRssMb = 0;
 };
@@ -198,6 +202,11 @@ json caseJson(const CaseResult& r) {
   // Only a 2-thread run has a 2-vs-1 speed-up; other counts report theirs separately.
   j["speedup_2v1"] = r.threads == 2 ? json(r.single.seconds / t.seconds) : json(nullptr);
   if (r.threads != 2 && r.threads != 1) j["speedup_vs_1"] = r.single.seconds / t.seconds;
+  j["cutting"] = r.bench.cutting.teeth() ? "teeth" : "envelope";
+  if (r.bench.cutting.teeth()) {
+    j["envelope_seconds"] = r.envelope.seconds;
+    j["teeth_over_envelope"] = t.seconds / r.envelope.seconds;
+  }
   return j;
 }
 
@@ -226,6 +235,18 @@ void printTable(std::FILE* out, const json& doc) {
                  c["moves"].get<long long>(), c["segments"].get<long long>(),
                  c["evals_per_cell"].get<double>(), c["seconds"].get<double>(),
                  c["mcells_per_s"].get<double>(), c["peak_rss_mb"].get<double>(), speedup.c_str());
+  }
+  bool teeth = false;
+  for (const json& c : doc["cases"]) teeth = teeth || c.contains("teeth_over_envelope");
+  if (teeth) {
+    std::fprintf(out, "\nteeth against the envelope (same raster and grid, B1's; %s threads):\n",
+                 doc["threads"].dump().c_str());
+    std::fprintf(out, "%-4s %10s %12s %8s\n", "case", "teeth s", "envelope s", "ratio");
+    for (const json& c : doc["cases"])
+      if (c.contains("teeth_over_envelope"))
+        std::fprintf(out, "%-4s %10.3f %12.3f %7.1fx\n", c["name"].get<std::string>().c_str(),
+                     c["seconds"].get<double>(), c["envelope_seconds"].get<double>(),
+                     c["teeth_over_envelope"].get<double>());
   }
   if (doc["stamp"].empty()) return;
   std::fprintf(out, "\nstamping baseline (z-map, same window, max error <= 1e-4 mm):\n");
@@ -289,6 +310,10 @@ int runBench(const BenchArgs& args) {
                             std::to_string(threads) + " threads");
       if (run == 0 || single.seconds < r.single.seconds) r.single = single;
       if (run == 0 || timed.seconds < r.timed.seconds) r.timed = timed;
+      if (r.bench.cutting.teeth()) {
+        const ExactRun envelope = runExact(r.bench, threads, true);
+        if (run == 0 || envelope.seconds < r.envelope.seconds) r.envelope = envelope;
+      }
     }
     r.peakRssMb = peakRssMb();
   }
@@ -325,14 +350,16 @@ constexpr const char* kBenchHelp =
     "     axis turns inside every move; 2 um (1e8 cells);\n"
     "  B3c B3's tips with one constant axis per move (the old B3), 2 um;\n"
     "  B4 the mount_rush ball R3 drop-cutter raster (OpenCAMLib, tests/data), 86 x 43.5 mm\n"
-    "     at 0.01 mm (3.7e7 cells).\n"
+    "     at 0.01 mm (3.7e7 cells);\n"
+    "  B5 B1 with the teeth cutting model (2 flutes, fz 0.1 mm; --quick: a 4 mm square),\n"
+    "     beside the envelope on the same grid (B1's raster) and the ratio of the times.\n"
     "Each case runs through simulate() at 1 thread and at --threads (default 2), twice\n"
     "each (alternating; the faster run counts), and reports cells, moves, exact\n"
     "evaluations per cell, seconds, Mcells/s, peak memory and the 2-vs-1-thread\n"
     "speed-up. The stamping baseline (classical z-map) runs on a\n"
     "small window of B1 and B3 with the largest step whose error is <= 1e-4 mm, and\n"
     "its time over the exact time on that window is reported as stamp_ratio.\n"
-    "Full size needs ~3.5 GB of memory and, for B3, hours on 2 cores; --quick uses 10x\n"
+    "Full size needs ~3.5 GB of memory and, for B3 and B5, hours on 2 cores; --quick uses 10x\n"
     "coarser spacing, --area a smaller square of each case (B4: at the relief's centre).";
 
 }  // namespace
@@ -342,8 +369,9 @@ Command addBenchCommand(CLI::App& parent, CommonOptions& common) {
   CLI::App* app = parent.add_subcommand("bench", kBenchHelp);
   app->add_flag("--json", args->json, "Print one JSON document on stdout (and nothing else there)");
   app->add_flag("--quick", args->quick, "10x coarser grid spacing (10 um and 20 um): CI-friendly");
-  app->add_option("--case", args->cases, "Run only this case (B1, B2, B3, B3c, B4); may be repeated")
-      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4"}));
+  app->add_option("--case", args->cases,
+                  "Run only this case (B1, B2, B3, B3c, B4, B5); may be repeated")
+      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4", "B5"}));
   app->add_option("--area", args->area, "Square stock of this side, mm, instead of 20 mm")
       ->check(CLI::PositiveNumber);
   app->add_option("--stamp-window", args->stampWindow,

@@ -19,13 +19,39 @@ namespace {
 struct IntervalArgs {
   std::string tool;
   double radius = 0, cornerRadius = 0, leadDeg = 0, tiltDeg = 0, scallop = 0;
+  double feedPerTooth = 0, runout = 0;
+  int flutes = 2;
   bool json = false;
   CLI::Option* cornerOption = nullptr;
+  CLI::Option* feedOption = nullptr;
 };
 
 std::string micrometres(double mm) {
   const double um = std::fabs(mm) < 5e-7 ? 0.0 : mm * 1000;  // no "-0.000"
   return fmt::format("{:+.3f}", um);
+}
+
+// Along the feed: the feed marks' closed form (analysis/feed_mark_formula.h).
+void printFeedMarks(const IntervalComparison& c) {
+  const FeedMarkPrediction& f = c.feedMarks;
+  std::printf("\nfeed marks along the pass centre line, fz = %g mm, %d flutes, runout %g mm:\n",
+              c.feedPerToothMm, c.cutter.teeth.flutes, c.cutter.teeth.runout);
+  if (!f.applicable) {
+    std::printf("  not applicable: %s\n", f.reason.c_str());
+    return;
+  }
+  std::printf("  rho_f = %g mm (%s), marks %g mm apart (%s)\n", f.profileRadiusMm,
+              c.cutter.type == CutterType::Ball ? "the ball's R" : "the corner radius r",
+              f.spacingMm, f.regime.c_str());
+  std::printf(
+      "  h_f = %.6f um (circles: rho_f - sqrt(rho_f^2 - s^2/4)), %.6f um (s^2 / (8 "
+      "rho_f))\n",
+      f.heightMm * 1e3, f.heightParabolaMm * 1e3);
+  if (f.hasRunoutThreshold)
+    std::printf(
+        "  runout threshold rho* = %.6f um: above it one tooth cuts alone (marks 2 fz "
+        "apart)\n",
+        f.runoutThresholdMm * 1e3);
 }
 
 void printTable(const IntervalComparison& c) {
@@ -54,6 +80,7 @@ void printTable(const IntervalComparison& c) {
   std::printf(
       "\nerror = simulated scallop left by two passes 2 L/2 apart - h; "
       "exact = where a simulated pass rises h above its floor\n");
+  if (c.feedPerToothMm > 0) printFeedMarks(c);
 }
 
 int runInterval(const IntervalArgs& args) {
@@ -74,6 +101,10 @@ int runInterval(const IntervalArgs& args) {
   request.leadDeg = args.leadDeg;
   request.tiltDeg = args.tiltDeg;
   request.scallopMm = args.scallop;
+  request.feedPerToothGiven = args.feedOption->count() > 0;
+  request.feedPerToothMm = args.feedPerTooth;
+  request.flutes = args.flutes;
+  request.runoutMm = args.runout;
   const IntervalComparison comparison = compareIntervals(request);
   if (args.json)
     std::printf("%s\n", toJson(comparison).dump(2).c_str());
@@ -90,7 +121,21 @@ constexpr const char* kIntervalHelp =
     "where a single simulated pass rises h above its floor (exact to 1e-10 mm, not\n"
     "limited by a grid). The pass feeds along +x; lead tilts the axis towards the feed,\n"
     "tilt towards the cross-feed +c; with a tilt the two sides differ and both are given.\n"
-    "Example: scallop interval --tool bull --radius 3 --corner-radius 1 --lead 5 --scallop 0.05";
+    "Example: scallop interval --tool bull --radius 3 --corner-radius 1 --lead 5 --scallop 0.05\n"
+    "\n"
+    "Along the feed (--feed-per-tooth fz): the teeth leave feed marks on the pass centre\n"
+    "line. With a lead, each tooth passes the contact point fz after the one before and\n"
+    "leaves there the circle of the cutter's feed-direction profile, rho_f = R for a ball,\n"
+    "r for a bull (its contact is on the corner), so the marks are arcs of chord fz:\n"
+    "  h_f = rho_f - sqrt(rho_f^2 - fz^2/4) ~ fz^2 / (8 rho_f)   (0 < |lead| < 90, no tilt;\n"
+    "  not for a flat end mill, whose corner is sharp, nor without lead, where every tooth\n"
+    "  passes the tip). With 2 flutes a runout rho lowers one tooth by 2 rho sin(lead) and\n"
+    "  shifts the marks by 2 rho cos(lead); above\n"
+    "  rho* = (-rho_f sin(lead) + sqrt(rho_f^2 sin^2(lead) + fz^2 cos^2(lead))) / (2 cos^2(lead))\n"
+    "  ~ fz^2 / (4 rho_f sin(lead)) the other tooth no longer cuts there: marks 2 fz apart.\n"
+    "Example: scallop interval --tool ball --radius 3 --lead 15 --scallop 0.01 "
+    "--feed-per-tooth 0.1\n"
+    "  (h_f = 0.417 um, rho* = 3.21 um; docs/teeth.md has the derivation)";
 
 }  // namespace
 
@@ -107,6 +152,16 @@ Command addIntervalCommand(CLI::App& parent, CommonOptions& common) {
   app->add_option("--tilt", args->tiltDeg,
                   "Tilt: axis inclined towards the cross-feed, deg (|tilt| < 90; default 0)");
   app->add_option("--scallop", args->scallop, "Scallop height h, mm (> 0)")->required();
+  args->feedOption = app->add_option(
+      "--feed-per-tooth", args->feedPerTooth,
+      "Feed per tooth fz, mm (> 0): adds the feed marks' height h_f along the pass\n"
+      "(feed per minute / (rpm x flutes))");
+  app->add_option("--flutes", args->flutes,
+                  "Teeth of the cutter, 1-16 (default 2); the runout threshold needs 2");
+  app->add_option(
+      "--runout", args->runout,
+      "Runout rho, mm, of tooth 0 towards the contact (0 <= rho <= R / 10; default 0):\n"
+      "below rho* both teeth cut (their cusps by parabolic arcs), above it one");
   app->add_flag("--json", args->json, "Print one JSON document on stdout (and nothing else there)");
   addThreadsOption(*app, common);
   return {app, [args]() { return runInterval(*args); }};

@@ -21,6 +21,24 @@ using nlohmann::json;
 
 namespace {
 
+// The teeth model's feed marks (report.json "feed_marks", docs/teeth.md), one line.
+void printFeedMarks(const json& report) {
+  if (!report.contains("feed_marks")) return;
+  const json& f = report["feed_marks"];
+  if (!f.contains("line")) {
+    std::printf("feed marks: not measured: %s\n", f["reason"].get<std::string>().c_str());
+    return;
+  }
+  std::printf("feed marks along the pass centre line: %.4f um peak to valley",
+              f["peak_to_valley_um"].get<double>());
+  if (!f["mean_spacing_mm"].is_null())
+    std::printf(", %.5f mm apart", f["mean_spacing_mm"].get<double>());
+  if (f.contains("predicted"))
+    std::printf(" (closed form %.4f um, %g mm)", f["predicted"]["peak_to_valley_um"].get<double>(),
+                f["predicted"]["spacing_mm"].get<double>());
+  std::printf("\n");
+}
+
 // What `simulate` prints on stdout for people (--json prints the document instead).
 void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
   const json& d = outcome.document;
@@ -37,6 +55,7 @@ void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
                 g["nx"].get<long long>(), g["ny"].get<long long>(),
                 d["tiled"]["bands"].get<long long>(), m["min_height"].get<double>(),
                 m["max_height"].get<double>(), d["timings_s"]["total"].get<double>());
+    printFeedMarks(d);
     std::printf("wrote %s/heights.exr, heights.gsf, preview.png, report.json\n", outDir.c_str());
     return;
   }
@@ -48,6 +67,7 @@ void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
       d["timings_s"]["cast"].get<double>());
   if (m.contains("max_scallop_height"))
     std::printf("largest scallop between passes: %.6f mm\n", m["max_scallop_height"].get<double>());
+  printFeedMarks(d);
   namespace fs = std::filesystem;
   const fs::path dir(outDir);
   std::printf("wrote %s\n      %s\n      %s\n      %s\n", (dir / "heights.exr").c_str(),
@@ -115,7 +135,9 @@ constexpr const char* kSimulateHelp =
     "DIR/report.json (inputs, grid, timings, measurements).\n"
     "Without JOB, runs the built-in default job (see --print-default-job):\n"
     "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
-    "Job file keys: tool{type,radius,corner_radius,flute_length}, stock{min,max},\n"
+    "Job file keys: tool{type,radius,corner_radius,flute_length,flutes,helix_deg,runout_mm,\n"
+    "runout_phase_deg}, cutting{model (envelope|teeth), feed_per_tooth (mm), phase_deg}\n"
+    "(teeth: the cutting edges and their feed marks, docs/teeth.md), stock{min,max},\n"
     "grid{spacing}, path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,\n"
     "segment_length} | file},\n"
     "design{stl, gouge_tolerance (mm, default 0.001)}: adds machined - design statistics,\n"

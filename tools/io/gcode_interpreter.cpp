@@ -88,6 +88,47 @@ int GcodeInterpreter::toolIndex() {
   return spindle_;
 }
 
+// --- Feeds. ---------------------------------------------------------------------
+
+// Without the teeth model feeds change no geometry and are listed as ignored. With it,
+// F (feed), S (rpm) and the feed mode are modal state: fz = F / (S flutes) in G94
+// (F in file units per minute), F / flutes in G95 (per revolution); in G93 (inverse
+// time) F depends on each move's length and no fz is read (the job's applies).
+void GcodeInterpreter::feeds(const GcodeBlock& b, const GcodeGroups& g) {
+  if (!options_.teeth) {
+    if (b.given('F')) ignore("F", "feed rate (G93/G94/G95 feeds change no geometry)");
+    if (b.given('S')) ignore("S", "spindle speed");
+    if (g.feed != -1) ignore(codeText('G', g.feed), "feed mode");
+    return;
+  }
+  if (g.feed != -1) feedMode_ = g.feed;
+  if (b.given('F')) {
+    feed_ = b.at('F');
+    if (!(feed_ >= 0)) throw InputError(where_, fmt::format("F{:g}: a feed must be >= 0", feed_));
+  }
+  if (b.given('S')) {
+    spindleRpm_ = b.at('S');
+    if (!(spindleRpm_ >= 0))
+      throw InputError(where_, fmt::format("S{:g}: a spindle speed must be >= 0 rpm", spindleRpm_));
+  }
+  for (double m : b.m)
+    if (m == 4)
+      out_.warnings.add(where_,
+                        "M4 (counter-clockwise spindle): the teeth model turns the cutter "
+                        "clockwise (M3) as a right-hand cutter cuts; the marks are M3's");
+}
+
+// The feed per tooth of a cutting move now, mm; 0 when the program gives none.
+double GcodeInterpreter::feedPerTooth(int tool) const {
+  if (!options_.teeth) return 0;
+  const int flutes =
+      options_.tools.empty() ? options_.flutes : out_.path.cutters[size_t(tool)].teeth.flutes;
+  const double feed = feed_ * scale_;  // mm per minute, or per revolution in G95
+  if (feedMode_ == 950) return feed / flutes;
+  if (feedMode_ == 940 && spindleRpm_ > 0) return feed / (spindleRpm_ * flutes);
+  return 0;
+}
+
 // --- A block. -------------------------------------------------------------------
 
 bool GcodeInterpreter::block(const GcodeBlock& b, int64_t line) {
@@ -96,13 +137,13 @@ bool GcodeInterpreter::block(const GcodeBlock& b, int64_t line) {
   if (b.kind == GcodeBlock::Kind::Percent) return ++percentLines_ < 2;  // the closing '%'
   if (b.kind == GcodeBlock::Kind::Empty) return true;
   GcodeGroups g = groupGcodeWords(b, options_.machine ? &*options_.machine : nullptr, where_);
-  for (const auto& [word, meaning] : g.ignored) ignore(word, meaning);
+  for (const auto& [word, meaning] : g.ignored)
+    if (!(options_.teeth && word == "M4")) ignore(word, meaning);
   for (const std::string& word : g.unknownM)
     out_.warnings.add(where_,
                       "M-code " + word + " ignored (machine-specific; nothing scallop simulates)");
   // In LinuxCNC's order of execution: feed, speed, tool, M words, modes, then motion.
-  if (b.given('F')) ignore("F", "feed rate (G93/G94/G95 feeds change no geometry)");
-  if (b.given('S')) ignore("S", "spindle speed");
+  feeds(b, g);
   selectTool(b, g.change);
   if (g.plane != -1) plane_ = g.plane / 10;
   if (g.units != -1) {
@@ -134,7 +175,6 @@ bool GcodeInterpreter::block(const GcodeBlock& b, int64_t line) {
     ignore(codeText('G', g.pathMode), "path control (exact stop or blending)");
   if (g.distance != -1) absolute_ = g.distance == 900;
   if (g.arcDistance != -1) arcAbsolute_ = g.arcDistance == 901;
-  if (g.feed != -1) ignore(codeText('G', g.feed), "feed mode");
   if (g.retract != -1) retractToInitial_ = g.retract == 980;
   if (g.nonModal == 40) ignore("G4", "dwell");
   if (g.nonModal == 280 || g.nonModal == 300)
@@ -213,6 +253,7 @@ void GcodeInterpreter::moveTo(const State& to, bool rapid) {
   out_.addMove(poseOf(state_), poseOf(to), rapid, line_);
   Move& mv = out_.path.moves.back();
   mv.tool = uint16_t(rapid ? std::max(spindle_, 0) : toolIndex());
+  if (!rapid) mv.feedPerTooth = feedPerTooth(mv.tool);
   if (!rapid && turns) {
     out_.path.rotary.push_back(
         {state_.tilt, to.tilt, state_.spin, to.spin, tcp_, state_.pos, to.pos});

@@ -41,6 +41,8 @@ class GcodeInterpreter {
   void moveTo(const State& to, bool rapid);
   void ignore(const std::string& word, const std::string& meaning);
   int toolIndex();
+  void feeds(const GcodeBlock& b, const GcodeGroups& g);
+  double feedPerTooth(int tool) const;
 
   const std::string& source_;
   const PathFileOptions& options_;
@@ -61,6 +63,10 @@ class GcodeInterpreter {
   double cycleR_ = 0, cycleZ_ = 0, cycleQ_ = 0;
   bool haveR_ = false, haveZ_ = false, haveQ_ = false;
   int percentLines_ = 0;
+  // Feeds (the teeth model's feed per tooth, docs/formats.md): the modal F (file units
+  // per minute, or per revolution in G95), S (rpm) and feed mode (930, 940, 950).
+  double feed_ = 0, spindleRpm_ = 0;
+  int feedMode_ = 940;
 };
 
 }  // namespace scallop

@@ -13,18 +13,16 @@
 #include "sweep/constants.h"
 #include "sweep/input_error.h"
 #include "tools/io/gcode_block.h"
+#include "tools/io/job_cutters.h"
+#include "tools/io/job_fields.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
 
 using nlohmann::json;
+using namespace jobfield;
 
 namespace {
-
-// --- Strict field access: every message names the field and what it should be. ----
-
-// Every number of a job is a length in mm, an angle in degrees or a tolerance, bounded
-// by kMaxMagnitudeMm (sweep/constants.h).
 
 // Rejects an object holding the same key twice (JSON allows it, nlohmann keeps the
 // last silently), naming the field path, e.g. "grid.spacing: duplicate key".
@@ -53,102 +51,6 @@ json::parser_callback_t duplicateKeyCheck(OpenObjects& open) {
     }
     return true;
   };
-}
-
-const json& requireObject(const json& parent, const std::string& key, const std::string& field) {
-  if (!parent.contains(key)) throw InputError(field, "missing; expected an object");
-  const json& v = parent.at(key);
-  if (!v.is_object()) throw InputError(field, "expected an object, got " + v.dump());
-  return v;
-}
-
-void rejectUnknownKeys(const json& obj, const std::set<std::string>& known,
-                       const std::string& field) {
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    if (known.count(it.key())) continue;
-    std::string list;
-    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-    throw InputError(field.empty() ? it.key() : field + "." + it.key(),
-                     "unknown key; expected one of: " + list);
-  }
-}
-
-double number(const json& obj, const std::string& key, const std::string& field,
-              const double* fallback = nullptr) {
-  if (!obj.contains(key)) {
-    if (fallback) return *fallback;
-    throw InputError(field, "missing; expected a number");
-  }
-  const json& v = obj.at(key);
-  if (!v.is_number()) throw InputError(field, "expected a number, got " + v.dump());
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) throw InputError(field, "expected a finite number");
-  if (std::fabs(d) > kMaxMagnitudeMm)
-    throw InputError(field, "must be within +-1e6 (mm: 1 km), got " + v.dump());
-  return d;
-}
-
-Vec3 point(const json& obj, const std::string& key, const std::string& field) {
-  if (!obj.contains(key)) throw InputError(field, "missing; expected [x, y, z] in mm");
-  const json& v = obj.at(key);
-  if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
-    throw InputError(field, "expected [x, y, z] (three numbers, mm), got " + v.dump());
-  const Vec3 p{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
-  if (!isFinite(p)) throw InputError(field, "coordinates must be finite");
-  if (std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))) > kMaxMagnitudeMm)
-    throw InputError(field, "coordinates must be within +-1e6 mm (1 km), got " + v.dump());
-  return p;
-}
-
-std::string text(const json& obj, const std::string& key, const std::string& field) {
-  if (!obj.contains(key)) throw InputError(field, "missing; expected a string");
-  const json& v = obj.at(key);
-  if (!v.is_string()) throw InputError(field, "expected a string, got " + v.dump());
-  return v.get<std::string>();
-}
-
-bool boolean(const json& obj, const std::string& key, const std::string& field, bool fallback) {
-  if (!obj.contains(key)) return fallback;
-  const json& v = obj.at(key);
-  if (!v.is_boolean()) throw InputError(field, "expected true or false, got " + v.dump());
-  return v.get<bool>();
-}
-
-// --- The sections of a job file. -------------------------------------------------
-
-Cutter parseTool(const json& tool, const std::string& f = "tool") {
-  rejectUnknownKeys(tool, {"type", "radius", "corner_radius", "flute_length"}, f);
-  const CutterType type = parseCutterType(text(tool, "type", f + ".type"), f + ".type");
-  const double zero = 0;
-  const double radius = number(tool, "radius", f + ".radius");
-  double corner = 0;
-  if (type == CutterType::Bull) {
-    corner = number(tool, "corner_radius", f + ".corner_radius");
-  } else if (tool.contains("corner_radius")) {
-    throw InputError(f + ".corner_radius",
-                     std::string("only a bull cutter takes a corner radius (a ") + toString(type) +
-                         " cutter's is fixed)");
-  }
-  const double flute = number(tool, "flute_length", f + ".flute_length", &zero);
-  if (tool.contains("flute_length") && flute <= 0)
-    throw InputError(f + ".flute_length", "must be > 0 mm");
-  return Cutter::make(type, radius, corner, flute, f);
-}
-
-// "tools": {"1": {cutter}, "2": ...}: keys are tool numbers 1..999999999.
-std::map<int64_t, Cutter> parseTools(const json& tools) {
-  std::map<int64_t, Cutter> out;
-  for (auto it = tools.begin(); it != tools.end(); ++it) {
-    const std::string& key = it.key();
-    const std::string f = "tools." + key;
-    if (key.empty() || key.size() > 9 || key.find_first_not_of("0123456789") != std::string::npos ||
-        key[0] == '0')
-      throw InputError(f, "expected a tool number (the G-code T word: 1, 2, ...) as the key");
-    if (!it.value().is_object()) throw InputError(f, "expected a cutter object");
-    out[std::stoll(key)] = parseTool(it.value(), f);
-  }
-  if (out.empty()) throw InputError("tools", "expected at least one tool");
-  return out;
 }
 
 // "work_offsets": {"G54": [x, y, z], ..., "G59": [...]}.
@@ -252,6 +154,8 @@ PathFileOptions Job::pathOptions() const {
   o.workOffsets = workOffsets;
   o.tools = tools;
   o.machine = machine;
+  o.teeth = cutting.teeth();
+  o.flutes = cutter.teeth.flutes;
   return o;
 }
 
@@ -305,14 +209,14 @@ Job parseJob(const std::string& textIn, const std::string& source,
                        "is no longer used: moves whose axis turns are swept exactly, with no "
                        "tolerance; remove \"sweep\" from the job");
     rejectUnknownKeys(doc,
-                      {"tool", "tools", "stock", "grid", "path", "design", "work_offsets",
-                       "block_delete", "machine"},
+                      {"tool", "tools", "cutting", "stock", "grid", "path", "design",
+                       "work_offsets", "block_delete", "machine"},
                       "");
     Job job;
     job.source = source;
     // Without "tool" the path file's CUTTER/ statement defines it (below).
     job.hasTool = doc.contains("tool");
-    if (job.hasTool) job.cutter = parseTool(requireObject(doc, "tool", "tool"));
+    if (job.hasTool) job.cutter = parseCutter(requireObject(doc, "tool", "tool"), "tool");
     if (doc.contains("tools")) {
       if (job.hasTool) throw InputError("tools", "a job has \"tool\" or \"tools\", not both");
       job.tools = parseTools(requireObject(doc, "tools", "tools"));
@@ -322,6 +226,8 @@ Job parseJob(const std::string& textIn, const std::string& source,
         if (cutter.radius + cutter.fluteLength > job.cutter.radius + job.cutter.fluteLength)
           job.cutter = cutter;
     }
+    if (doc.contains("cutting"))
+      job.cutting = parseCuttingModel(requireObject(doc, "cutting", "cutting"));
     if (doc.contains("work_offsets"))
       job.workOffsets = parseWorkOffsets(requireObject(doc, "work_offsets", "work_offsets"));
     job.blockDelete = boolean(doc, "block_delete", "block_delete", false);
@@ -389,13 +295,6 @@ void throwFromJob(const InputError& e, const std::string& source) {
   throw InputError(source + ": " + e.where(), e.reason());
 }
 
-static json cutterToJson(const Cutter& c) {
-  return {{"type", toString(c.type)},
-          {"radius", c.radius},
-          {"corner_radius", c.cornerRadius},
-          {"flute_length", c.fluteLength}};
-}
-
 json jobToJson(const Job& job) {
   json out = {{"stock",
                {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
@@ -422,6 +321,7 @@ json jobToJson(const Job& job) {
       tools[std::to_string(number)] = cutterToJson(cutter);
     out["tools"] = tools;
   }
+  out["cutting"] = cuttingModelToJson(job.cutting);
   if (job.design)
     out["design"] = {{"stl", job.designFile}, {"gouge_tolerance", job.gougeTolerance}};
   json offsets = json::object();

@@ -14,6 +14,7 @@
 #include "analysis/triangle_mesh.h"
 #include "raycast/zmap.h"
 #include "sweep/cutter.h"
+#include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/raster.h"
 #include "sweep/vec3.h"
@@ -32,6 +33,8 @@ struct Job {
   Cutter cutter;
   // "tools": {"1": {cutter}, ...}: T number -> cutter (CONVENTIONS.md "Tools").
   std::map<int64_t, Cutter> tools;
+  // "cutting": the envelope (default) or the teeth model (docs/teeth.md).
+  CuttingModel cutting;
   // "work_offsets": {"G54": [x, y, z], ...}: G-code work offsets, mm (zero by default).
   std::array<Vec3, 6> workOffsets{};
   // "block_delete": true skips G-code lines starting with '/'.
@@ -57,7 +60,8 @@ struct Job {
   double gougeTolerance = 1e-3;                // mm below the design that is a gouge
 
   GridSpec grid() const;
-  // How the path file is read: block delete, work offsets, tools and machine.
+  // How the path file is read: block delete, work offsets, tools, machine, and for the
+  // teeth model the one tool's flute count (G-code feeds per tooth).
   PathFileOptions pathOptions() const;
 };
 

@@ -14,7 +14,8 @@ namespace scallop {
 
 namespace {
 
-constexpr double kStockSide = 20;  // mm, the standard cases' stock
+constexpr double kStockSide = 20;      // mm, the standard cases' stock
+constexpr double kQuickTeethSide = 4;  // mm, B5's stock with --quick
 
 RasterSpec b1Raster() {
   RasterSpec spec;
@@ -28,7 +29,7 @@ RasterSpec b1Raster() {
 }  // namespace
 
 const std::vector<std::string>& benchCaseNames() {
-  static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4"};
+  static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4", "B5"};
   return names;
 }
 
@@ -122,16 +123,22 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
   BenchCase b;
   b.name = name;
   b.cutter = Cutter::make(CutterType::Bull, 3, 1);
-  if (name == "B1" || name == "B2") {
+  if (name == "B1" || name == "B2" || name == "B5") {
+    const double square = name == "B5" && options.quick ? std::min(side, kQuickTeethSide) : side;
     b.stock.extend({0, 0, -5});
-    b.stock.extend({side, side, 0});
+    b.stock.extend({square, square, 0});
     RasterSpec spec = b1Raster();
     if (name == "B2") spec.segmentLength = 0.05;
     b.path = makeRaster(b.cutter, b.stock, spec);
-    b.grid = gridCovering(0, 0, side, side, 0.001 * coarse);
+    b.grid = gridCovering(0, 0, square, square, 0.001 * coarse);
     b.description = name == "B1"
                         ? "raster, bull R3 r1, lead 5 deg, step-over 0.8 mm, one move per pass"
-                        : "B1 with every pass cut into 0.05 mm moves (CAM-like)";
+                    : name == "B2" ? "B1 with every pass cut into 0.05 mm moves (CAM-like)"
+                                   : "B1 with teeth: 2 flutes, fz 0.1 mm (cutting model \"teeth\")";
+    if (name == "B5") {
+      b.cutting.kind = CuttingModelKind::Teeth;
+      b.cutting.feedPerTooth = 0.1;
+    }
   } else if (name == "B3" || name == "B3c") {
     // The surface spans z in [-0.5, 0.5]; a stock top at 0.6 mm is cut everywhere.
     b.stock.extend({0, 0, -2});
@@ -160,7 +167,7 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
         gridCovering(b.stock.min.x, b.stock.min.y, b.stock.max.x, b.stock.max.y, 0.01 * coarse);
     b.description = "mount_rush ball R3 drop-cutter raster (OpenCAMLib), 3-axis CAM output";
   } else {
-    throw InputError("--case", "unknown case \"" + name + "\"; expected B1, B2, B3, B3c or B4");
+    throw InputError("--case", "unknown case \"" + name + "\"; expected B1, B2, B3, B3c, B4 or B5");
   }
   return b;
 }

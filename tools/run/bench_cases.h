@@ -8,6 +8,7 @@
 
 #include "raycast/zmap.h"
 #include "sweep/cutter.h"
+#include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/vec3.h"
@@ -15,12 +16,13 @@
 namespace scallop {
 
 struct BenchCase {
-  std::string name;         // "B1", "B2", "B3", "B3c", "B4"
+  std::string name;         // "B1", "B2", "B3", "B3c", "B4", "B5"
   std::string description;  // one line for people
   Cutter cutter;
   Box3 stock;
   GridSpec grid;
   ToolPath path;
+  CuttingModel cutting;  // B5: teeth; the others: the envelope
 };
 
 struct BenchCaseOptions {
@@ -28,7 +30,7 @@ struct BenchCaseOptions {
   double area = 0;     // > 0: a square stock of this side, mm, instead of 20 x 20 mm
 };
 
-// "B1", "B2", "B3", "B3c", "B4" in the order they are reported.
+// "B1", "B2", "B3", "B3c", "B4", "B5" in the order they are reported.
 const std::vector<std::string>& benchCaseNames();
 
 // Throws InputError (field "--case" / "--area") for an unknown name or a bad area.
@@ -42,6 +44,9 @@ const std::vector<std::string>& benchCaseNames();
 //  B4: the mount_rush ball-nose drop-cutter path (real 3-axis CAM output,
 //      tests/data/mount_rush) over its stock at 0.01 mm. Throws InputError naming the
 //      file when the data folder is not there (an installed binary without sources).
+//  B5: B1 with the teeth cutting model (2 flutes, fz 0.1 mm, phase 0). With `quick`
+//      its stock is a 4 mm square (or --area's, if smaller): the teeth cost about
+//      100 times the envelope a cell, and the quick bench runs in CI.
 BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options);
 
 // The freeform 5-axis finishing path of B3 and B3c: passes along +X, `passGap` mm apart

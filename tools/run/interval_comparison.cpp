@@ -95,6 +95,26 @@ json toJson(const IntervalComparison& c) {
                       numberOrNull(p.applicable, p.halfIntervalMm - c.exact.halfIntervalMm())}});
   }
   doc["procedures"] = procs;
+  if (c.feedPerToothMm > 0) {
+    const FeedMarkPrediction& f = c.feedMarks;
+    json marks = {{"feed_per_tooth", c.feedPerToothMm},
+                  {"flutes", c.cutter.teeth.flutes},
+                  {"runout", c.cutter.teeth.runout},
+                  {"applicable", f.applicable},
+                  {"reason", f.reason},
+                  {"formula",
+                   "h_f = rho_f - sqrt(rho_f^2 - s^2 / 4) ~ s^2 / (8 rho_f), s the "
+                   "spacing; rho_f = R (ball) or r (bull)"},
+                  {"source", "docs/teeth.md"}};
+    marks["profile_radius"] = numberOrNull(f.applicable, f.profileRadiusMm);
+    marks["spacing"] = numberOrNull(f.applicable, f.spacingMm);
+    marks["height"] = numberOrNull(f.applicable, f.heightMm);
+    marks["height_parabola"] = numberOrNull(f.applicable, f.heightParabolaMm);
+    marks["regime"] = f.regime;
+    marks["runout_threshold"] =
+        numberOrNull(f.applicable && f.hasRunoutThreshold, f.runoutThresholdMm);
+    doc["feed_marks"] = marks;
+  }
   doc["units"] = {{"length", "mm"}, {"angle", "deg"}};
   return doc;
 }
@@ -136,9 +156,26 @@ IntervalComparison compareIntervals(const IntervalRequest& request,
   if (!std::isfinite(request.scallopMm) || request.scallopMm <= 0)
     throw InputError(names.scallop,
                      "must be a height > 0 mm, got " + fmt::format("{:g}", request.scallopMm));
+  if (request.feedPerToothGiven &&
+      (!(request.feedPerToothMm > 0) || !(request.feedPerToothMm <= 1e6)))
+    throw InputError(names.feedPerTooth, "must be a feed per tooth > 0 mm (at most 1e6), got " +
+                                             fmt::format("{:g}", request.feedPerToothMm));
+  CutterTeeth teeth;
+  try {
+    teeth = CutterTeeth::make(request.flutes, 0, request.runoutMm, 0, cutter.radius, "tool");
+  } catch (const InputError& e) {
+    const bool flutes = e.where() == "tool.flutes";
+    throw InputError(flutes ? names.flutes : names.runout, e.reason());
+  }
   const SimulatedPass pass(cutter, request.leadDeg, request.tiltDeg);
   IntervalComparison comparison = compareIntervals(pass, request.scallopMm);
   if (!comparison.exact.reachable) throw InputError(names.scallop, comparison.exact.reason);
+  comparison.cutter.teeth = teeth;
+  if (request.feedPerToothGiven) {
+    comparison.feedPerToothMm = request.feedPerToothMm;
+    comparison.feedMarks = predictFeedMarks(comparison.cutter, request.leadDeg, request.tiltDeg,
+                                            request.feedPerToothMm);
+  }
   return comparison;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/feed_mark_formula.h"
 #include "analysis/simulated_interval.h"
 #include "sweep/cutter.h"
 
@@ -29,6 +30,10 @@ struct IntervalComparison {
   double scallopMm = 0;  // the requested h
   SideIntervals exact;   // the simulated exact L/2 (both sides)
   std::vector<ProcedureComparison> procedures;
+  // Along the feed, with a feed per tooth (analysis/feed_mark_formula.h): the cutter's
+  // teeth (flutes, runout) and the feed marks' closed form.
+  double feedPerToothMm = 0;  // 0: not asked
+  FeedMarkPrediction feedMarks;
 };
 
 // Runs every procedure for `h` and simulates each L/2 on `pass`. The seed 000 bull
@@ -46,6 +51,11 @@ struct IntervalRequest {
   double radiusMm = 0, cornerRadiusMm = 0;
   bool cornerGiven = false;  // whether a corner radius was given at all
   double leadDeg = 0, tiltDeg = 0, scallopMm = 0;
+  // The feed marks beside the path interval, when a feed per tooth (> 0) is given.
+  bool feedPerToothGiven = false;
+  double feedPerToothMm = 0;
+  int flutes = 2;
+  double runoutMm = 0;
 };
 
 // The names that errors give the request's fields: the CLI's options by default, the
@@ -57,11 +67,15 @@ struct IntervalFieldNames {
   const char* lead = "--lead";
   const char* tilt = "--tilt";
   const char* scallop = "--scallop";
+  const char* feedPerTooth = "--feed-per-tooth";
+  const char* flutes = "--flutes";
+  const char* runout = "--runout";
 };
 
 // Checks every field (InputError naming it and what was expected: a bull cutter
 // without a corner radius, angles with |angle| >= 90, h <= 0, an h the cutter cannot
-// leave) and runs compareIntervals.
+// leave, fz < 0, flutes outside 1..16, runout outside [0, R / 10]) and runs
+// compareIntervals, and with fz > 0 predictFeedMarks.
 IntervalComparison compareIntervals(const IntervalRequest& request,
                                     const IntervalFieldNames& names = {});
 

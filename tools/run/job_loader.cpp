@@ -63,6 +63,36 @@ void readPathFile(Job& job) {
   job.pathFormat = read.format;
 }
 
+// The teeth model needs a feed per tooth for every cutting move (its own, from G-code F
+// and S, or the job's) and a straight tip (not a TCP-off turning move): refused here,
+// naming the job's field or the file's line, before anything is swept.
+void checkTeethInputs(const Job& job) {
+  if (!job.cutting.teeth()) return;
+  const ToolPath& path = job.path;
+  auto line = [&](size_t k) {
+    return k < job.moveLines.size() ? job.pathFile + ":" + std::to_string(job.moveLines[k])
+                                    : "path move " + std::to_string(k + 1);
+  };
+  for (size_t k = 0; k < path.moves.size(); ++k) {
+    const Move& m = path.moves[k];
+    if (m.rapid) continue;
+    if (m.feedPerTooth <= 0 && job.cutting.feedPerTooth <= 0)
+      throw InputError(
+          "cutting.feed_per_tooth",
+          job.isRaster
+              ? "missing; the teeth model needs a feed per tooth (mm, > 0) for the raster"
+              : "missing; the teeth model needs a feed per tooth (mm, > 0): the move of " +
+                    line(k) +
+                    " carries none (G-code gives F / (S flutes) in G94 with S, F / flutes in "
+                    "G95; G93 and other formats give none)");
+    if (m.rotary > 0 && m.rotary <= path.rotary.size() && !path.rotary[m.rotary - 1].tcp)
+      throw InputError(line(k),
+                       "the teeth cutting model needs a straight tip motion; a move that turns "
+                       "the rotary axes with TCP off (its tip follows a curve) is not supported "
+                       "with teeth");
+  }
+}
+
 }  // namespace
 
 void loadJobInputs(Job& job, bool checkMemory) {
@@ -76,6 +106,7 @@ void loadJobInputs(Job& job, bool checkMemory) {
     } else {
       readPathFile(job);
     }
+    checkTeethInputs(job);
   } catch (const InputError& e) {
     throwFromJob(e, job.source);
   }

@@ -69,7 +69,8 @@ void checkSceneFitsMemory(const Job& job) {
   // The scene's own estimate (raycast/simulation.h), made from the moves before anything
   // is built: it errs high, never low, so what it accepts is never killed for memory.
   size_t moves = 0;
-  const double need = estimateSceneBytes(job.cutter, job.path, job.stock.max.z, &moves);
+  const double need =
+      estimateSceneBytes(job.cutter, job.path, job.stock.max.z, &moves, job.cutting);
   const double available = availableMemoryBytes();
   if (need > 0.8 * available) {
     std::ostringstream msg;

@@ -7,6 +7,7 @@
 
 #include "analysis/design_deviation.h"
 #include "tools/io/job.h"
+#include "tools/io/job_cutters.h"
 #include "tools/render/deviation_png.h"
 
 namespace scallop {
@@ -44,11 +45,7 @@ json pathFileReport(const Job& job, bool quiet) {
     for (size_t t = 0; t < cutters.size(); ++t) {
       const Cutter& c = cutters[t];
       tools.push_back({{"number", t < job.toolNumbers.size() ? job.toolNumbers[t] : int64_t(t + 1)},
-                       {"tool",
-                        {{"type", toString(c.type)},
-                         {"radius", c.radius},
-                         {"corner_radius", c.cornerRadius},
-                         {"flute_length", c.fluteLength}}},
+                       {"tool", cutterToJson(c)},
                        {"cutting_moves", moves[t]},
                        {"first_line", first[t]},
                        {"last_line", last[t]}});
@@ -66,7 +63,16 @@ json pathFileReport(const Job& job, bool quiet) {
 json designReport(const Job& job, const ZMap& map, const std::string& outDir, bool quiet) {
   const MeshIndex index(*job.design);
   DesignComparison c = compareWithDesign(map, index, job.gougeTolerance);
-  attributeGouges(c, map, job.cutter, job.path);
+  // MoveFinder traces a height to the moves whose swept solid of revolution reaches it;
+  // the teeth leave heights above that envelope, so with teeth the gouges are reported
+  // without their moves (docs/teeth.md).
+  const bool traced = !job.cutting.teeth();
+  if (traced)
+    attributeGouges(c, map, job.cutter, job.path);
+  else if (!quiet && !c.gouges.empty())
+    std::fprintf(stderr,
+                 "scallop: warning: design: with the teeth cutting model the gouges are not "
+                 "traced to their moves (the move finder sweeps the envelope)\n");
   double limit = 0;
   if (!outDir.empty()) {
     const std::string png = (std::filesystem::path(outDir) / "deviation.png").string();
@@ -94,20 +100,23 @@ json designReport(const Job& job, const ZMap& map, const std::string& outDir, bo
                       {"moves", moves}});
   }
   const double maxDepth = c.gouges.empty() ? 0.0 : c.gouges.front().depth;
-  json r = {
-      {"stl", job.designFile},
-      {"gouge_tolerance_mm", job.gougeTolerance},
-      {"cells_compared", s.cells},
-      {"deviation_mm", {{"min", s.min}, {"max", s.max}, {"mean", s.mean}, {"rms", s.rms}}},
-      {"overcut",
-       {{"cells", s.overcutCells},
-        {"area_mm2", s.overcutAreaMm2},
-        {"max_depth_mm", std::max(0.0, -s.min)}}},
-      {"undercut",
-       {{"cells", s.undercutCells},
-        {"area_mm2", s.undercutAreaMm2},
-        {"max_mm", std::max(0.0, s.max)}}},
-      {"gouges", {{"count", c.gouges.size()}, {"max_depth_mm", maxDepth}, {"deepest", gouges}}}};
+  json r = {{"stl", job.designFile},
+            {"gouge_tolerance_mm", job.gougeTolerance},
+            {"cells_compared", s.cells},
+            {"deviation_mm", {{"min", s.min}, {"max", s.max}, {"mean", s.mean}, {"rms", s.rms}}},
+            {"overcut",
+             {{"cells", s.overcutCells},
+              {"area_mm2", s.overcutAreaMm2},
+              {"max_depth_mm", std::max(0.0, -s.min)}}},
+            {"undercut",
+             {{"cells", s.undercutCells},
+              {"area_mm2", s.undercutAreaMm2},
+              {"max_mm", std::max(0.0, s.max)}}},
+            {"gouges",
+             {{"count", c.gouges.size()},
+              {"max_depth_mm", maxDepth},
+              {"moves_traced", traced},
+              {"deepest", gouges}}}};
   if (!outDir.empty()) {
     r["image"] = "deviation.png";
     r["image_colour_range_mm"] = limit;

@@ -66,6 +66,7 @@ json simulationReport(const RunRecord& run) {
   r["surface_stats"] = run.surfaceStats;
   r["outputs"] = {"heights.exr", "heights.gsf", "preview.png", "report.json"};
   if (!run.tiled.is_null()) r["tiled"] = run.tiled;
+  if (!run.feedMarks.is_null()) r["feed_marks"] = run.feedMarks;
   if (!run.pathFile.is_null()) r["path_file"] = run.pathFile;
   if (!run.design.is_null()) r["design"] = run.design, r["outputs"].push_back("deviation.png");
   return r;

@@ -41,9 +41,10 @@ struct RunRecord {
   nlohmann::json raster;        // rasterMeasurements() for a raster job, else null
   nlohmann::json surfaceStats;  // surfaceStatsJson()
   // Optional sections, left out when null.
-  nlohmann::json pathFile;  // pathFileReport() for a job with a path file
-  nlohmann::json design;    // designReport(), which also wrote deviation.png
-  nlohmann::json tiled;     // {"bands", "band_rows", "exr_tile_rows"} of a banded run
+  nlohmann::json pathFile;   // pathFileReport() for a job with a path file
+  nlohmann::json design;     // designReport(), which also wrote deviation.png
+  nlohmann::json tiled;      // {"bands", "band_rows", "exr_tile_rows"} of a banded run
+  nlohmann::json feedMarks;  // the teeth model's, tools/run/feed_mark_report.h
 };
 
 nlohmann::json simulationReport(const RunRecord& run);

@@ -12,6 +12,7 @@
 #include "tools/io/height_images.h"
 #include "tools/io/job.h"
 #include "tools/render/preview_png.h"
+#include "tools/run/feed_mark_report.h"
 #include "tools/run/memory_limits.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
@@ -37,12 +38,15 @@ InMemoryHeights computeHeights(const Job& job, const RunSettings& settings) {
   out.pathFile = job.isRaster ? json() : pathFileReport(job, settings.quiet);
   if (!settings.quiet)
     std::fprintf(stderr,
-                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm\n",
+                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g "
+                 "mm%s\n",
                  job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
-                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing);
+                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing,
+                 job.cutting.teeth() ? ", teeth" : "");
 
   SimulationOptions options;
   options.cast.progress = settings.progress;
+  options.cutting = job.cutting;
   if (settings.method == "stamp") {
     // The classical z-map baseline (raycast/stamp_caster.h), reported in the same slots.
     StampOptions stamp;
@@ -83,6 +87,7 @@ RunRecord inMemoryRecord(const Job& job, const RunSettings& settings, const InMe
   if (job.isRaster) run.raster = rasterMeasurements(job, sim.map);
   run.surfaceStats = mapSurfaceStatsJson(sim.map);
   run.pathFile = h.pathFile;
+  run.feedMarks = feedMarksReport(job, sim.map);
   return run;
 }
 
@@ -113,6 +118,11 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
 
 // What runSimulation refuses before the long computation, whatever the outputs.
 void checkRunnable(const Job& job, bool exact, bool banded) {
+  if (job.cutting.teeth() && !exact)
+    throw InputError("--method",
+                     "stamp: the stamping baseline stamps the solid of revolution "
+                     "and has no cutting edges; the job's cutting.model \"teeth\" "
+                     "needs --method exact");
   if (job.design && (!exact || banded))
     throw InputError(job.source + ": design",
                      "the design comparison needs --method exact and the whole map in memory "

@@ -22,6 +22,7 @@
 #include "tools/io/version.h"
 #include "tools/render/preview_png.h"
 #include "tools/run/band_files.h"
+#include "tools/run/feed_mark_report.h"
 #include "tools/run/memory_limits.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
@@ -123,6 +124,7 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
                  (long long)layout.bandRows);
 
   SimulationOptions options;
+  options.cutting = job.cutting;
   const std::unique_ptr<SweptScene> scene =
       buildScene(job.cutter, job.path, job.stock, grid.spacing, options);
   const SceneStats sceneStats = scene->stats();
@@ -140,6 +142,7 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
               {"swept_segments", sceneStats.segments},
               {"culling_tiles", sceneStats.tiles}};
   if (!job.isRaster && partial) run["path_file_md5"] = fileMd5(job.pathFile);
+  if (job.cutting.teeth()) run["feed_marks_plan"] = feedMarkPlan(job, grid);
   std::unique_ptr<TiledOutput> output;
   if (!partial) {
     output = std::make_unique<TiledOutput>(run, settings.outDir);
@@ -204,11 +207,14 @@ TiledOutput::TiledOutput(const json& run, const std::string& dir)
   pooled.nx = (grid_.nx + poolFactor_ - 1) / poolFactor_;
   pooled.ny = (grid_.ny + poolFactor_ - 1) / poolFactor_;
   preview_ = ZMap(pooled, HUGE_VAL);
+  if (run.contains("feed_marks_plan"))
+    feedMarks_ = std::make_unique<FeedMarkSampler>(run.at("feed_marks_plan"), grid_);
 }
 
 void TiledOutput::add(const ZMap& band, const json& stats) {
   const auto t0 = Clock::now();
   writer_.append(band);
+  if (feedMarks_) feedMarks_->add(band);
   const int64_t j0 = band.grid().offsetJ;
   for (int64_t j = 0; j < band.ny(); ++j)
     for (int64_t i = 0; i < band.nx(); ++i) {
@@ -273,6 +279,7 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
                   {"band_rows", run_.at("band_rows")},
                   {"exr_tile_rows", run_.at("exr_tile_rows")}};
   record.pathFile = pathFile_;
+  if (feedMarks_) record.feedMarks = feedMarks_->report();
   record.totalSeconds = totalSeconds + secondsSince(t0);
   const json r = simulationReport(record);
   writeReport(r, dir_);

@@ -20,6 +20,7 @@
 #include "analysis/surface_metrology.h"
 #include "raycast/zmap.h"
 #include "tools/io/height_images.h"
+#include "tools/run/feed_mark_report.h"
 #include "tools/run/simulation_run.h"
 
 namespace scallop {
@@ -77,6 +78,7 @@ class TiledOutput {
   double evaluations_ = 0;
   nlohmann::json raster_, pathFile_;
   HeightMoments moments_;  // raw heights of the bands so far, merged in band order
+  std::unique_ptr<FeedMarkSampler> feedMarks_;  // a teeth run's (feed_mark_report.h)
 };
 
 }  // namespace scallop

@@ -1,0 +1,200 @@
+// report.json "feed_marks" (tools/run/feed_mark_report.h) of teeth runs, as `simulate`
+// writes it: the closed form of the feed marks met on the pass centre line, the same
+// section from bands as from the whole map, the line sampled as `export --profile`
+// samples it, and the teeth model's refusals and warnings around the run.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "analysis/feed_mark_formula.h"
+#include "analysis/feed_marks.h"
+#include "analysis/profile_metrology.h"
+#include "analysis/triangle_mesh.h"
+#include "tests/tools/cli_harness.h"
+#include "tools/io/job.h"
+#include "tools/io/stl_io.h"
+#include "tools/run/feed_mark_report.h"
+#include "tools/run/job_loader.h"
+
+namespace scallop {
+namespace {
+
+using nlohmann::json;
+using scallop::test::CliRun;
+
+// Ball R3, lead 15 deg, 2 flutes, fz 0.1 mm: three passes 0.02 mm apart, the middle one
+// on y = 0, over 0.8 mm (8 marks) on a 2 um grid (8000 cells).
+const std::string kJob = R"({
+  "tool":  {"type": "ball", "radius": 3.0},
+  "cutting": {"model": "teeth", "feed_per_tooth": 0.1},
+  "stock": {"min": [0, -0.02, -2], "max": [0.8, 0.02, 0]},
+  "grid":  {"spacing": 0.002},
+  "path":  {"raster": {"direction": "x", "step_over": 0.02, "depth": 0.1, "lead_deg": 15}}
+})";
+
+class FeedMarksReport : public scallop::test::CliFixture {
+ protected:
+  json simulate(const std::string& job, const std::string& extra = "") {
+    const CliRun r = run("simulate " + write("job.json", job).string() + " -o " + path("out") +
+                         " --json" + extra);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return r.status == 0 ? json::parse(r.out) : json();
+  }
+};
+
+TEST_F(FeedMarksReport, TheCentreLineShowsTheClosedFormsMarks) {
+  const json report = simulate(kJob);
+  const json& f = report.at("feed_marks");
+  const json& line = f.at("line");
+  // The middle pass (move 3 of 5: pass, rapid, pass, rapid, pass), over the cell
+  // centres' span along x.
+  EXPECT_EQ(line["move"], 3);
+  EXPECT_NEAR(line["from"][0].get<double>(), 0.001, 1e-15);  // the first cell centre
+  EXPECT_EQ(line["from"][1], 0.0);
+  EXPECT_NEAR(line["to"][0].get<double>(), 0.799, 1e-15);
+  EXPECT_EQ(line["samples"], 400);
+  // The prediction is the formula's for the job.
+  const FeedMarkPrediction p = predictFeedMarks(Cutter::make(CutterType::Ball, 3), 15, 0, 0.1);
+  const json& predicted = f.at("predicted");
+  EXPECT_EQ(predicted["peak_to_valley_um"].get<double>(), p.heightMm * 1e3);
+  EXPECT_EQ(predicted["spacing_mm"].get<double>(), 0.1);
+  EXPECT_EQ(predicted["runout_threshold_mm"].get<double>(), p.runoutThresholdMm);
+  // Measured: the highest samples lie up to half a step from the cusps, below them by at
+  // most the arcs' slope there, (fz / 2) / R, times step / 2; the heights are exact to
+  // 1e-9 mm.
+  const double pv = f["peak_to_valley_um"].get<double>() * 1e-3;
+  const double slope = 0.05 / std::sqrt(9 - 0.0025);
+  EXPECT_LE(pv, p.heightMm + 2e-9);
+  EXPECT_GE(pv, p.heightMm - slope * 0.001 - 2e-9);
+  // Every bottom is the same arc, refined by a parabola (its bias ~1e-7 of a step).
+  EXPECT_EQ(f["valleys"], 8);
+  EXPECT_NEAR(f["mean_spacing_mm"].get<double>(), 0.1, 1e-6);
+
+  // The envelope has no feed marks (and no section).
+  std::string envelope = kJob;
+  envelope.replace(envelope.find("\"teeth\""), 7, "\"envelope\"");
+  EXPECT_FALSE(simulate(envelope).contains("feed_marks"));
+}
+
+// G-code feeds reach the teeth: fz = F / (S flutes) spaces the marks. The axis leans
+// 15 deg along the feed (a table-table machine with TCP on, B -15: a vertical axis under
+// teeth does not finish near its centre line yet, docs/teeth.md "Limits").
+TEST_F(FeedMarksReport, GcodeFeedsPerToothSpaceTheMarks) {
+  const std::string job = R"({"tool": {"type": "ball", "radius": 3},
+      "cutting": {"model": "teeth"}, "machine": {"kinematics": "xyzbc-trt"},
+      "stock": {"min": [0, -0.02, -2], "max": [0.8, 0.02, 0]}, "grid": {"spacing": 0.002},
+      "path": {"file": "p.nc"}})";
+  for (const double feed : {1200.0, 1500.0}) {
+    write("p.nc",
+          "G43.4\nS6000 M3\nG0 X-4 Y0 Z1 B-15 C0\nG1 Z-0.1 F" + std::to_string(feed) + "\nX5\n");
+    const json f = simulate(job).at("feed_marks");
+    const double fz = feed / (6000 * 2);
+    EXPECT_EQ(f.at("line").at("move"), 2) << f;  // X-4 -> X5, after the plunge
+    EXPECT_NEAR(f.at("mean_spacing_mm").get<double>(), fz, 1e-6) << feed;
+    const double h = circularMarkHeight(3, fz), slope = 0.5 * fz / std::sqrt(9 - 0.25 * fz * fz);
+    const double pv = f.at("peak_to_valley_um").get<double>() * 1e-3;
+    EXPECT_LE(pv, h + 2e-9) << feed;
+    EXPECT_GE(pv, h - slope * 0.001 - 2e-9) << feed;
+  }
+}
+
+TEST_F(FeedMarksReport, BandsGiveTheWholeMapsSection) {
+  const json whole = simulate(kJob).at("feed_marks");
+  // 20 rows in bands of 3: the line (between rows 9 and 10) spans two bands.
+  EXPECT_EQ(simulate(kJob, " --tile-rows 3").at("feed_marks"), whole);
+  // Band files carry the plan in their run description; merge measures it again.
+  const CliRun bands = run("simulate " + path("job.json") + " -o " + path("bands") +
+                           " --tile-rows 3 --json --bands 0:7");
+  ASSERT_EQ(bands.status, 0) << bands.err;
+  const CliRun merged = run("merge " + path("bands") + " --json");
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_EQ(json::parse(merged.out).at("feed_marks"), whole);
+}
+
+TEST(FeedMarkSampler, SamplesAsExtractProfileDoesFromAnyBands) {
+  Job job = loadJob(kJob, "job.json");
+  const GridSpec g = job.grid();
+  ZMap map(g, 0);
+  for (int64_t j = 0; j < g.ny; ++j)  // heights with no symmetry to hide a swapped index
+    for (int64_t i = 0; i < g.nx; ++i) map.at(i, j) = std::sin(0.37 * i + 1.1 * j * j) * 1e-3;
+  const json plan = feedMarkPlan(job, g);
+  const json& line = plan.at("line");
+  const Profile profile = extractProfile(map, line["from"][0], line["from"][1], line["to"][0],
+                                         line["to"][1], line["step_mm"], "test");
+  const FeedMarks expected = measureFeedMarks(profile);
+  FeedMarkSampler whole(plan, g);
+  whole.add(map);
+  const json r = whole.report();
+  EXPECT_EQ(r["peak_to_valley_um"].get<double>(), expected.peakToValleyMm * 1e3);
+  EXPECT_EQ(r["valleys"], expected.valleysMm.size());
+  // Row by row, in any order: the same bits.
+  FeedMarkSampler rows(plan, g);
+  for (int64_t j = g.ny - 1; j >= 0; --j) {
+    ZMap band(g.rows(j, j + 1), 0);
+    for (int64_t i = 0; i < g.nx; ++i) band.at(i, 0) = map.at(i, j);
+    rows.add(band);
+  }
+  EXPECT_EQ(rows.report(), r);
+}
+
+TEST_F(FeedMarksReport, LinesThatCannotBeMeasuredSayWhy) {
+  // The plan alone (no simulation: a vertical axis under teeth does not finish near
+  // its centre line yet, docs/teeth.md "Limits"). A pass no longer than two cutter radii
+  // leaves no centre line; a path file gets no prediction (only rasters do).
+  write("p.nc", "S10000\nG0 X0.1 Y0 Z1\nG1 Z-0.1 F2000\nX0.7\n");
+  const Job job = loadJob(R"({"tool": {"type": "ball", "radius": 3}, "cutting": {"model": "teeth"},
+      "stock": {"min": [0, -0.02, -2], "max": [0.8, 0.02, 0]}, "grid": {"spacing": 0.01},
+      "path": {"file": "p.nc"}})",
+                          path("job.json"));
+  const json plan = feedMarkPlan(job, job.grid());
+  EXPECT_FALSE(plan.contains("line"));
+  EXPECT_NE(plan.at("reason").get<std::string>().find("two cutter radii"), std::string::npos)
+      << plan;
+  EXPECT_TRUE(plan.contains("predicted_reason"));
+  // A pass that misses the map, and a raster the formula does not cover (no lead).
+  write("far.nc", "S10000\nG0 X-20 Y5 Z-0.1\nG1 X20 F2000\n");
+  Job far = job;
+  far.path = loadJob(R"({"tool": {"type": "ball", "radius": 3}, "cutting": {"model": "teeth"},
+      "stock": {"min": [0, -0.02, -2], "max": [0.8, 0.02, 0]}, "grid": {"spacing": 0.01},
+      "path": {"file": "far.nc"}})",
+                     path("job.json"))
+                 .path;
+  EXPECT_NE(feedMarkPlan(far, far.grid()).at("reason").get<std::string>().find("does not cross"),
+            std::string::npos);
+  std::string flat = kJob;
+  flat.replace(flat.find(", \"lead_deg\": 15"), 16, "");
+  const Job noLead = loadJob(flat, "job.json");
+  const json p = feedMarkPlan(noLead, noLead.grid());
+  EXPECT_TRUE(p.contains("line"));
+  EXPECT_NE(p.at("predicted_reason").get<std::string>().find("lead"), std::string::npos) << p;
+  // An envelope job has no plan.
+  EXPECT_TRUE(feedMarkPlan(parseJob(R"({"tool": {"type": "ball", "radius": 1},
+      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
+      "path": {"raster": {"direction": "x", "step_over": 0.8, "depth": 0.3}}})",
+                                    "e.json"),
+                           job.grid())
+                  .is_null());
+}
+
+TEST_F(FeedMarksReport, DesignGougesAreNotTracedWithTeeth) {
+  // The plane z = -0.05 under a cut 0.1 deep: one gouge, reported without its moves.
+  const std::array<Vec3, 3> t1{{{-1, -1, -0.05}, {2, -1, -0.05}, {2, 1, -0.05}}};
+  const std::array<Vec3, 3> t2{{{-1, -1, -0.05}, {2, 1, -0.05}, {-1, 1, -0.05}}};
+  writeStl(meshFromTriangles({t1, t2}), path("plane.stl"), StlFormat::Binary, "plane");
+  std::string job = kJob;
+  job.insert(job.rfind('}'), R"(, "design": {"stl": "plane.stl"})");
+  const CliRun r = run("simulate " + write("job.json", job).string() + " -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("not traced"), std::string::npos) << r.err;
+  const json report = json::parse(scallop::test::slurp(path("out/report.json")));
+  const json& gouges = report.at("design").at("gouges");
+  EXPECT_GT(gouges.at("count").get<int>(), 0);
+  EXPECT_EQ(gouges.at("moves_traced"), false);
+  for (const json& g : gouges.at("deepest")) EXPECT_TRUE(g.at("moves").empty());
+}
+
+}  // namespace
+}  // namespace scallop

@@ -1,0 +1,156 @@
+// The teeth model's inputs (docs/formats.md "Cutting model"): the cutter keys and the
+// job's "cutting" read and echoed, G-code feeds per tooth from F, S and the flutes of
+// the tool in the spindle, and the refusals that name the field or the line.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "sweep/input_error.h"
+#include "tests/tools/cli_harness.h"
+#include "tools/input_error_message.h"
+#include "tools/io/gcode_reader.h"
+#include "tools/io/job.h"
+#include "tools/run/job_loader.h"
+
+namespace scallop {
+namespace {
+
+using nlohmann::json;
+
+const std::string kRaster = R"({
+  "tool":  {"type": "ball", "radius": 3.0, "flutes": 3, "helix_deg": 30, "runout_mm": 0.01,
+            "runout_phase_deg": 45},
+  "cutting": {"model": "teeth", "feed_per_tooth": 0.05, "phase_deg": 10},
+  "stock": {"min": [0, 0, -2], "max": [4, 4, 0]},
+  "grid":  {"spacing": 0.1},
+  "path":  {"raster": {"direction": "x", "step_over": 0.8, "depth": 0.3}}
+})";
+
+TEST(TeethJob, CutterKeysAndCuttingAreReadAndEchoed) {
+  const Job job = parseJob(kRaster, "job.json");
+  const CutterTeeth& t = job.cutter.teeth;
+  EXPECT_EQ(t.flutes, 3);
+  EXPECT_EQ(t.helixDeg, 30);
+  EXPECT_EQ(t.runout, 0.01);
+  EXPECT_EQ(t.runoutPhaseDeg, 45);
+  EXPECT_TRUE(job.cutting.teeth());
+  EXPECT_EQ(job.cutting.feedPerTooth, 0.05);
+  EXPECT_EQ(job.cutting.phaseDeg, 10);
+  const json echo = jobToJson(job);
+  EXPECT_EQ(echo["tool"]["flutes"], 3);
+  EXPECT_EQ(echo["tool"]["runout_mm"], 0.01);
+  EXPECT_EQ(echo["cutting"]["model"], "teeth");
+  EXPECT_EQ(echo["cutting"]["feed_per_tooth"], 0.05);
+  EXPECT_EQ(echo["cutting"]["phase_deg"], 10);
+
+  // Defaults: CutterTeeth's, and the envelope.
+  const Job plain = parseJob(R"({"tools": {"1": {"type": "ball", "radius": 1},
+      "2": {"type": "bull", "radius": 2, "corner_radius": 0.5, "flutes": 4}},
+      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
+      "path": {"file": "p.nc"}})",
+                             "job.json");
+  EXPECT_FALSE(plain.cutting.teeth());
+  EXPECT_EQ(plain.cutting.feedPerTooth, 0);
+  EXPECT_EQ(plain.tools.at(1).teeth.flutes, 2);
+  EXPECT_EQ(plain.tools.at(1).teeth.runout, 0);
+  EXPECT_EQ(plain.tools.at(2).teeth.flutes, 4);
+  EXPECT_EQ(jobToJson(plain)["cutting"], (json{{"model", "envelope"}, {"phase_deg", 0.0}}));
+  EXPECT_FALSE(plain.pathOptions().teeth);
+  EXPECT_TRUE(parseJob(kRaster, "job.json").pathOptions().teeth);
+  EXPECT_EQ(parseJob(kRaster, "job.json").pathOptions().flutes, 3);
+}
+
+// G-code read with the teeth model: `flutes` for the one tool, or the job's tools.
+ToolPathFile readTeeth(const std::string& text, int flutes = 2,
+                       const std::map<int64_t, Cutter>& tools = {}, bool teeth = true) {
+  std::istringstream in(text);
+  ToolPathFile out;
+  PathFileOptions options;
+  options.teeth = teeth;
+  options.flutes = flutes;
+  options.tools = tools;
+  readGcode(in, "p.nc", options, out);
+  return out;
+}
+
+bool ignored(const ToolPathFile& f, const std::string& word) {
+  for (const IgnoredWords::Entry& e : f.ignored.entries)
+    if (e.word == word) return true;
+  return false;
+}
+
+TEST(TeethJob, GcodeFeedPerToothIsFeedOverSpeedAndFlutes) {
+  // G94 (the default): fz = F / (S flutes), F and S modal; rapids carry none.
+  const ToolPathFile f = readTeeth("G0 X0 Y0 Z1\nS10000 M3\nG1 Z-0.2 F2000\nX5\nF500\nX6\nG0 Z5\n");
+  ASSERT_EQ(f.path.moves.size(), 4u);  // the first G0 only sets the position
+  EXPECT_EQ(f.path.moves[0].feedPerTooth, 2000.0 / (10000 * 2));
+  EXPECT_EQ(f.path.moves[1].feedPerTooth, 2000.0 / (10000 * 2));
+  EXPECT_EQ(f.path.moves[2].feedPerTooth, 500.0 / (10000 * 2));
+  EXPECT_EQ(f.path.moves[3].feedPerTooth, 0);  // the rapid
+  EXPECT_FALSE(ignored(f, "F"));
+  EXPECT_FALSE(ignored(f, "S"));
+  EXPECT_TRUE(f.warnings.kept.empty());
+  // Inches per minute; 4 flutes; arc chords each carry it.
+  const ToolPathFile inch = readTeeth("G20 G0 X0 Y0 Z0\nS1000\nG2 X1 Y0 R0.5 F10\n", 4);
+  ASSERT_GT(inch.path.moves.size(), 2u);
+  for (const Move& m : inch.path.moves) EXPECT_EQ(m.feedPerTooth, 10 * 25.4 / (1000 * 4));
+  // G95: F per revolution, no S needed; G93 (inverse time) and no S give none.
+  EXPECT_EQ(readTeeth("G95 G0 X0 Y0 Z0\nG1 X1 F0.2\n").path.moves[0].feedPerTooth, 0.1);
+  EXPECT_EQ(readTeeth("G93 S9000 G0 X0 Y0 Z0\nG1 X1 F60\n").path.moves[0].feedPerTooth, 0);
+  EXPECT_EQ(readTeeth("G0 X0 Y0 Z0\nG1 X1 F600\n").path.moves[0].feedPerTooth, 0);
+  // Without the teeth model feeds are ignored words and no move carries one.
+  const ToolPathFile envelope = readTeeth("S10000 G0 X0 Y0 Z0\nG1 X1 F2000\n", 2, {}, false);
+  EXPECT_EQ(envelope.path.moves[0].feedPerTooth, 0);
+  EXPECT_TRUE(ignored(envelope, "F"));
+  EXPECT_TRUE(ignored(envelope, "S"));
+}
+
+TEST(TeethJob, GcodeFeedPerToothUsesTheFlutesOfTheToolInTheSpindle) {
+  std::map<int64_t, Cutter> tools;
+  tools[1] = Cutter::make(CutterType::Ball, 1);
+  tools[2] = Cutter::make(CutterType::Flat, 2);
+  tools[2].teeth.flutes = 4;
+  const ToolPathFile f =
+      readTeeth("S8000 M3\nT1 M6\nG0 X0 Y0 Z1\nG1 Z0 F1600\nT2 M6\nG0 X5 Y0 Z1\nG1 Z0\n", 2, tools);
+  ASSERT_EQ(f.path.moves.size(), 3u);
+  EXPECT_EQ(f.path.moves[0].feedPerTooth, 1600.0 / (8000 * 2));
+  EXPECT_EQ(f.path.moves[2].feedPerTooth, 1600.0 / (8000 * 4));
+}
+
+TEST(TeethJob, M4IsAWarningWithTeethOnly) {
+  const ToolPathFile teeth = readTeeth("S9000 M4\nG0 X0 Y0 Z0\nG1 X1 F900\n");
+  ASSERT_EQ(teeth.warnings.kept.size(), 1u);
+  EXPECT_NE(teeth.warnings.kept[0].find("p.nc:1"), std::string::npos) << teeth.warnings.kept[0];
+  EXPECT_NE(teeth.warnings.kept[0].find("M3"), std::string::npos) << teeth.warnings.kept[0];
+  const ToolPathFile envelope = readTeeth("S9000 M4\nG0 X0 Y0 Z0\nG1 X1 F900\n", 2, {}, false);
+  EXPECT_TRUE(envelope.warnings.kept.empty());
+  EXPECT_TRUE(ignored(envelope, "M4"));
+}
+
+class TeethJobFiles : public scallop::test::CliFixture {};
+
+TEST_F(TeethJobFiles, AMoveWithoutFeedPerToothNamesTheFieldAndTheLine) {
+  write("p.nc", "G0 X0 Y0 Z1\nS10000\nG1 Z-0.2 F2000\nG94\nG93 X3 F60\n");
+  const std::string job = R"({"tool": {"type": "ball", "radius": 1},
+      "cutting": {"model": "teeth"},
+      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
+      "path": {"file": "p.nc"}})";
+  const std::string source = path("job.json");
+  const std::string message = inputErrorMessage([&] { loadJob(job, source); });
+  EXPECT_NE(message.find(source + ": cutting.feed_per_tooth"), std::string::npos) << message;
+  EXPECT_NE(message.find("p.nc:5"), std::string::npos) << message;  // the G93 move
+  // The job's feed per tooth covers the moves without their own.
+  std::string withFz = job;
+  withFz.replace(withFz.find("\"teeth\"}"), 8, "\"teeth\", \"feed_per_tooth\": 0.1}");
+  EXPECT_EQ(inputErrorMessage([&] { loadJob(withFz, source); }), "");
+  // A raster's moves carry none: the job must give it.
+  std::string raster = kRaster;
+  raster.replace(raster.find(", \"feed_per_tooth\": 0.05"), 24, "");
+  const std::string r = inputErrorMessage([&] { loadJob(raster, source); });
+  EXPECT_NE(r.find(source + ": cutting.feed_per_tooth"), std::string::npos) << r;
+}
+
+}  // namespace
+}  // namespace scallop

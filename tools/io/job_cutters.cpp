@@ -1,0 +1,102 @@
+#include "tools/io/job_cutters.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "sweep/input_error.h"
+#include "tools/io/job_fields.h"
+
+namespace scallop {
+
+using nlohmann::json;
+using namespace jobfield;
+
+Cutter parseCutter(const json& tool, const std::string& f) {
+  rejectUnknownKeys(tool,
+                    {"type", "radius", "corner_radius", "flute_length", "flutes", "helix_deg",
+                     "runout_mm", "runout_phase_deg"},
+                    f);
+  const CutterType type = parseCutterType(text(tool, "type", f + ".type"), f + ".type");
+  const double zero = 0;
+  const double radius = number(tool, "radius", f + ".radius");
+  double corner = 0;
+  if (type == CutterType::Bull) {
+    corner = number(tool, "corner_radius", f + ".corner_radius");
+  } else if (tool.contains("corner_radius")) {
+    throw InputError(f + ".corner_radius",
+                     std::string("only a bull cutter takes a corner radius (a ") + toString(type) +
+                         " cutter's is fixed)");
+  }
+  const double flute = number(tool, "flute_length", f + ".flute_length", &zero);
+  if (tool.contains("flute_length") && flute <= 0)
+    throw InputError(f + ".flute_length", "must be > 0 mm");
+  Cutter cutter = Cutter::make(type, radius, corner, flute, f);
+  // The teeth: the type checks here, the ranges in CutterTeeth::make (one place).
+  const CutterTeeth defaults;
+  const int64_t flutes =
+      wholeNumber(tool, "flutes", f + ".flutes", 1, 16, defaults.flutes, "a number of teeth");
+  const double helix = number(tool, "helix_deg", f + ".helix_deg", &defaults.helixDeg);
+  const double runout = number(tool, "runout_mm", f + ".runout_mm", &defaults.runout);
+  const double phase =
+      number(tool, "runout_phase_deg", f + ".runout_phase_deg", &defaults.runoutPhaseDeg);
+  cutter.teeth = CutterTeeth::make(int(flutes), helix, runout, phase, cutter.radius, f);
+  return cutter;
+}
+
+std::map<int64_t, Cutter> parseTools(const json& tools) {
+  std::map<int64_t, Cutter> out;
+  for (auto it = tools.begin(); it != tools.end(); ++it) {
+    const std::string& key = it.key();
+    const std::string f = "tools." + key;
+    if (key.empty() || key.size() > 9 || key.find_first_not_of("0123456789") != std::string::npos ||
+        key[0] == '0')
+      throw InputError(f, "expected a tool number (the G-code T word: 1, 2, ...) as the key");
+    if (!it.value().is_object()) throw InputError(f, "expected a cutter object");
+    out[std::stoll(key)] = parseCutter(it.value(), f);
+  }
+  if (out.empty()) throw InputError("tools", "expected at least one tool");
+  return out;
+}
+
+CuttingModel parseCuttingModel(const json& c) {
+  rejectUnknownKeys(c, {"model", "feed_per_tooth", "phase_deg"}, "cutting");
+  CuttingModel model;
+  if (c.contains("model")) {
+    const std::string kind = text(c, "model", "cutting.model");
+    if (kind == "teeth")
+      model.kind = CuttingModelKind::Teeth;
+    else if (kind != "envelope")
+      throw InputError("cutting.model",
+                       "expected \"envelope\" (the swept solid of revolution) or "
+                       "\"teeth\" (the cutting edges), got \"" +
+                           kind + "\"");
+  }
+  if (c.contains("feed_per_tooth")) {
+    model.feedPerTooth = number(c, "feed_per_tooth", "cutting.feed_per_tooth");
+    if (!(model.feedPerTooth > 0))
+      throw InputError("cutting.feed_per_tooth",
+                       "must be a feed per tooth > 0 mm, got " + c.at("feed_per_tooth").dump());
+  }
+  model.phaseDeg = number(c, "phase_deg", "cutting.phase_deg", &model.phaseDeg);
+  return model;
+}
+
+const char* toString(CuttingModelKind kind) {
+  return kind == CuttingModelKind::Teeth ? "teeth" : "envelope";
+}
+
+json cutterToJson(const Cutter& c) {
+  return {{"type", toString(c.type)},        {"radius", c.radius},
+          {"corner_radius", c.cornerRadius}, {"flute_length", c.fluteLength},
+          {"flutes", c.teeth.flutes},        {"helix_deg", c.teeth.helixDeg},
+          {"runout_mm", c.teeth.runout},     {"runout_phase_deg", c.teeth.runoutPhaseDeg}};
+}
+
+json cuttingModelToJson(const CuttingModel& cutting) {
+  json j = {{"model", toString(cutting.kind)}};
+  if (cutting.feedPerTooth > 0) j["feed_per_tooth"] = cutting.feedPerTooth;
+  j["phase_deg"] = cutting.phaseDeg;
+  return j;
+}
+
+}  // namespace scallop

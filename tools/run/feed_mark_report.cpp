@@ -1,0 +1,221 @@
+#include "tools/run/feed_mark_report.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "analysis/feed_mark_formula.h"
+#include "analysis/feed_marks.h"
+#include "analysis/profile_metrology.h"
+#include "tools/io/job.h"
+
+namespace scallop {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kSampling =
+    "every grid spacing along the line, each height the bilinear interpolation of the four "
+    "surrounding cell centres";
+std::string spacingMethod() {
+  return fmt::format(
+      "valleys: turning points with a hysteresis of {:g}% of the peak-to-valley, each refined "
+      "by the parabola through its sample and its two neighbours; spacing = (last - first) / "
+      "(valleys - 1)",
+      100 * kFeedMarkHysteresis);
+}
+
+struct Xy {
+  double x, y;
+};
+
+// Whether move b, right after a, continues a's straight line in xy in the same sense.
+bool continues(const Move& a, const Move& b) {
+  if (b.rapid || b.tool != a.tool || b.from.tip.x != a.to.tip.x || b.from.tip.y != a.to.tip.y)
+    return false;
+  const double ax = a.to.tip.x - a.from.tip.x, ay = a.to.tip.y - a.from.tip.y;
+  const double bx = b.to.tip.x - b.from.tip.x, by = b.to.tip.y - b.from.tip.y;
+  const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+  return lb > 0 && std::fabs(ax * by - ay * bx) <= 1e-9 * la * lb && ax * bx + ay * by > 0;
+}
+
+// Clips p + t d, t in [0, 1], to the box; false when nothing is left.
+bool clipToBox(Xy& a, Xy& b, double x0, double y0, double x1, double y1) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  double t0 = 0, t1 = 1;
+  auto edge = [&](double p, double q) {  // keeps p t <= q (Liang-Barsky)
+    if (p == 0) return q >= 0;
+    const double r = q / p;
+    if (p < 0) {
+      if (r > t1) return false;
+      t0 = std::max(t0, r);
+    } else {
+      if (r < t0) return false;
+      t1 = std::min(t1, r);
+    }
+    return true;
+  };
+  if (!edge(-dx, a.x - x0) || !edge(dx, x1 - a.x) || !edge(-dy, a.y - y0) || !edge(dy, y1 - a.y))
+    return false;
+  const Xy from = a;
+  a = {from.x + t0 * dx, from.y + t0 * dy};
+  b = {from.x + t1 * dx, from.y + t1 * dy};
+  return t1 > t0;
+}
+
+// The centre line (feed_mark_report.h), or the reason there is none.
+json centreLine(const Job& job, const GridSpec& g) {
+  const std::vector<Move>& moves = job.path.moves;
+  const double cx = g.originX + 0.5 * double(g.nx) * g.spacing;
+  const double cy = g.originY + 0.5 * double(g.ny) * g.spacing;
+  size_t best = moves.size();
+  double bestDistance = HUGE_VAL;
+  for (size_t k = 0; k < moves.size(); ++k) {
+    const Move& m = moves[k];
+    const double dx = m.to.tip.x - m.from.tip.x, dy = m.to.tip.y - m.from.tip.y;
+    const double len2 = dx * dx + dy * dy;
+    if (m.rapid || !(len2 > 0)) continue;
+    const double t =
+        std::clamp(((cx - m.from.tip.x) * dx + (cy - m.from.tip.y) * dy) / len2, 0.0, 1.0);
+    const double d = std::hypot(m.from.tip.x + t * dx - cx, m.from.tip.y + t * dy - cy);
+    if (d < bestDistance) bestDistance = d, best = k;
+  }
+  if (best == moves.size()) return {{"reason", "no cutting move moves in x or y"}};
+  size_t first = best, last = best;
+  while (first > 0 && continues(moves[first - 1], moves[first])) --first;
+  while (last + 1 < moves.size() && continues(moves[last], moves[last + 1])) ++last;
+  const Move& m = moves[best];
+  const double radius =
+      m.tool < job.path.cutters.size() ? job.path.cutters[m.tool].radius : job.cutter.radius;
+  Xy a{moves[first].from.tip.x, moves[first].from.tip.y};
+  Xy b{moves[last].to.tip.x, moves[last].to.tip.y};
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  json line = {{"move", best + 1}};
+  if (best < job.moveLines.size()) line["file_line"] = job.moveLines[best];
+  if (!(length > 2 * radius))
+    return {{"reason", "the pass nearest the map centre (move " + std::to_string(best + 1) +
+                           ") is not longer than two cutter radii"}};
+  const Xy u{(b.x - a.x) / length, (b.y - a.y) / length};
+  a = {a.x + radius * u.x, a.y + radius * u.y};
+  b = {b.x - radius * u.x, b.y - radius * u.y};
+  if (g.nx < 2 || g.ny < 2 ||
+      !clipToBox(a, b, g.cellCentreX(0), g.cellCentreY(0), g.cellCentreX(g.nx - 1),
+                 g.cellCentreY(g.ny - 1)))
+    return {{"reason", "the pass nearest the map centre (move " + std::to_string(best + 1) +
+                           "), less a cutter radius at each end, does not cross the map"}};
+  const int64_t samples =
+      int64_t(std::floor(std::hypot(b.x - a.x, b.y - a.y) / g.spacing + 1e-9)) + 1;
+  if (samples < 3)
+    return {{"reason", "the pass nearest the map centre crosses fewer than 3 cells of it"}};
+  line["from"] = {a.x, a.y};
+  line["to"] = {b.x, b.y};
+  line["step_mm"] = g.spacing;
+  line["samples"] = samples;
+  line["pass_moves"] = {first + 1, last + 1};
+  line["sampling"] = kSampling;
+  return {{"line", line}};
+}
+
+// The closed form for a raster (analysis/feed_mark_formula.h).
+void addPrediction(const Job& job, json& plan) {
+  if (!job.isRaster) {
+    plan["predicted_reason"] =
+        "the closed form is recorded for raster jobs (straight passes "
+        "at a known lead on a level floor)";
+    return;
+  }
+  const FeedMarkPrediction p = predictFeedMarks(job.cutter, job.raster.leadDeg, job.raster.tiltDeg,
+                                                job.cutting.feedPerTooth);
+  if (!p.applicable) {
+    plan["predicted_reason"] = p.reason;
+    return;
+  }
+  json j = {{"formula", "h = rho_f - sqrt(rho_f^2 - s^2 / 4) ~ s^2 / (8 rho_f), s the spacing"},
+            {"profile_radius_mm", p.profileRadiusMm},
+            {"spacing_mm", p.spacingMm},
+            {"peak_to_valley_um", p.heightMm * 1e3},
+            {"peak_to_valley_parabola_um", p.heightParabolaMm * 1e3},
+            {"regime", p.regime}};
+  if (p.hasRunoutThreshold) j["runout_threshold_mm"] = p.runoutThresholdMm;
+  plan["predicted"] = j;
+}
+
+}  // namespace
+
+json feedMarkPlan(const Job& job, const GridSpec& grid) {
+  if (!job.cutting.teeth()) return nullptr;
+  json plan = centreLine(job, grid);
+  addPrediction(job, plan);
+  return plan;
+}
+
+FeedMarkSampler::FeedMarkSampler(const json& plan, const GridSpec& grid)
+    : plan_(plan), grid_(grid) {
+  if (!plan_.contains("line")) return;
+  const json& line = plan_["line"];
+  Profile p;
+  p.x0 = line["from"][0].get<double>(), p.y0 = line["from"][1].get<double>();
+  p.x1 = line["to"][0].get<double>(), p.y1 = line["to"][1].get<double>();
+  p.stepMm = stepMm_ = line["step_mm"].get<double>();
+  const int64_t n = line["samples"].get<int64_t>();
+  const GridSpec& g = grid_;
+  // As extractProfile places a sample in the cell-centre lattice (clamped onto it: the
+  // line was clipped to the centres' span, up to rounding).
+  auto index = [](double v, double origin, double spacing, int64_t cells) {
+    return std::clamp((v - origin) / spacing - 0.5, 0.0, double(cells - 1));
+  };
+  for (int64_t k = 0; k < n; ++k) {
+    const double fi = index(p.xAt(k), g.originX, g.spacing, g.nx);
+    const double fj = index(p.yAt(k), g.originY, g.spacing, g.ny);
+    Sample s;
+    s.i0 = std::min<int64_t>(int64_t(fi), std::max<int64_t>(0, g.nx - 2));
+    s.j0 = std::min<int64_t>(int64_t(fj), std::max<int64_t>(0, g.ny - 2));
+    s.i1 = std::min(s.i0 + 1, g.nx - 1), s.j1 = std::min(s.j0 + 1, g.ny - 1);
+    s.u = fi - double(s.i0), s.v = fj - double(s.j0);
+    samples_.push_back(s);
+  }
+  cells_.assign(4 * samples_.size(), std::numeric_limits<double>::quiet_NaN());
+}
+
+void FeedMarkSampler::add(const ZMap& map) {
+  const int64_t j0 = map.grid().offsetJ, j1 = j0 + map.ny();
+  for (size_t k = 0; k < samples_.size(); ++k) {
+    const Sample& s = samples_[k];
+    const int64_t is[4] = {s.i0, s.i1, s.i0, s.i1}, js[4] = {s.j0, s.j0, s.j1, s.j1};
+    for (int c = 0; c < 4; ++c)
+      if (js[c] >= j0 && js[c] < j1) cells_[4 * k + size_t(c)] = map.at(is[c], js[c] - j0);
+  }
+}
+
+json FeedMarkSampler::report() const {
+  json r = plan_;
+  if (!plan_.contains("line")) return r;
+  Profile p;
+  p.stepMm = stepMm_;
+  for (size_t k = 0; k < samples_.size(); ++k) {
+    const Sample& s = samples_[k];
+    const double* c = &cells_[4 * k];
+    p.height.push_back((1 - s.u) * (1 - s.v) * c[0] + s.u * (1 - s.v) * c[1] +
+                       (1 - s.u) * s.v * c[2] + s.u * s.v * c[3]);
+  }
+  const FeedMarks m = measureFeedMarks(p);
+  r["peak_to_valley_um"] = m.peakToValleyMm * 1e3;
+  r["valleys"] = m.valleysMm.size();
+  r["mean_spacing_mm"] = m.valleysMm.size() >= 2 ? json(m.meanSpacingMm) : json(nullptr);
+  r["spacing_method"] = spacingMethod();
+  return r;
+}
+
+json feedMarksReport(const Job& job, const ZMap& map) {
+  const json plan = feedMarkPlan(job, map.grid());
+  if (plan.is_null()) return plan;
+  FeedMarkSampler sampler(plan, map.grid());
+  sampler.add(map);
+  return sampler.report();
+}
+
+}  // namespace scallop
