@@ -66,6 +66,9 @@ TEST_F(BadInputMatrix, GcodePrograms) {
               {"p.nc:2", "below the horizontal"}, kMachineJob),
       program("A on a BC machine", "G43.4\nG0 X0 Y0 Z1 A10\n", {"p.nc:2", "rotary word A"},
               kMachineJob),
+      program("teeth with a TCP-off turning move", "S1000\nG0 X0 Y0 Z1\nG1 X1 B10 F200\n",
+              {"p.nc:3", "TCP off", "teeth"},
+              replaced(kMachineJob, "{\n", "{\"cutting\": {\"model\": \"teeth\"},\n")),
   };
   for (const BadInputRow& row : rows) check(row);
 }

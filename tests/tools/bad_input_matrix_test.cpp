@@ -114,14 +114,11 @@ TEST_F(BadInputMatrix, TeethKeys) {
   const std::string teeth = R"({"model": "teeth", "feed_per_tooth": 0.1})";
   const std::vector<BadInputRow> rows = {
       jobRow("flutes a string", tool(R"("flutes": "two")"), {"tool.flutes", "whole number"}),
-      jobRow("flutes a boolean", tool(R"("flutes": true)"), {"tool.flutes", "whole number"}),
       jobRow("flutes zero", tool(R"("flutes": 0)"), {"tool.flutes", "1 to 16"}),
-      jobRow("flutes 17", tool(R"("flutes": 17)"), {"tool.flutes", "1 to 16"}),
       jobRow("flutes not whole", tool(R"("flutes": 2.5)"), {"tool.flutes", "whole number"}),
       jobRow("helix a string", tool(R"("helix_deg": "30")"), {"tool.helix_deg", "number"}),
       jobRow("helix beyond 60 deg", tool(R"("helix_deg": 61)"), {"tool.helix_deg", "60"}),
-      jobRow("negative helix", tool(R"("helix_deg": -1)"), {"tool.helix_deg"}),
-      jobRow("negative runout", tool(R"("runout_mm": -0.01)"), {"tool.runout_mm"}),
+      jobRow("runout a string", tool(R"("runout_mm": "0.01")"), {"tool.runout_mm", "number"}),
       jobRow("runout beyond R / 10", tool(R"("runout_mm": 0.2)"), {"tool.runout_mm", "0.1"}),
       jobRow("runout phase a string", tool(R"("runout_phase_deg": "up")"),
              {"tool.runout_phase_deg", "number"}),
@@ -132,8 +129,6 @@ TEST_F(BadInputMatrix, TeethKeys) {
       jobRow("cutting unknown key", cutting(R"({"model": "teeth", "rpm": 9000})"),
              {"cutting.rpm", "unknown key"}),
       jobRow("zero feed per tooth", cutting(R"({"model": "teeth", "feed_per_tooth": 0})"),
-             {"cutting.feed_per_tooth", "> 0"}),
-      jobRow("negative feed per tooth", cutting(R"({"model": "teeth", "feed_per_tooth": -0.1})"),
              {"cutting.feed_per_tooth", "> 0"}),
       jobRow("feed per tooth a string", cutting(R"({"model": "teeth", "feed_per_tooth": "0.1"})"),
              {"cutting.feed_per_tooth", "number"}),
@@ -158,11 +153,6 @@ TEST_F(BadInputMatrix, TeethKeys) {
        "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth 0",
        1,
        {"--feed-per-tooth", "> 0"}},
-      {"interval: NaN feed per tooth",
-       {},
-       "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth nan",
-       1,
-       {"--feed-per-tooth"}},
       {"interval: zero flutes",
        {},
        "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth 0.1 --flutes 0",
@@ -173,11 +163,6 @@ TEST_F(BadInputMatrix, TeethKeys) {
        "interval --tool ball --radius 3 --lead 15 --scallop 0.01 --feed-per-tooth 0.1 --runout 1",
        1,
        {"--runout", "0.3"}},
-      {"interval: flutes not a number",
-       {},
-       "interval --tool ball --radius 3 --scallop 0.01 --flutes two",
-       2,
-       {"--flutes"}},
   };
   for (const BadInputRow& row : rows) check(row);
 }

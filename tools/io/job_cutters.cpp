@@ -31,10 +31,9 @@ Cutter parseCutter(const json& tool, const std::string& f) {
   if (tool.contains("flute_length") && flute <= 0)
     throw InputError(f + ".flute_length", "must be > 0 mm");
   Cutter cutter = Cutter::make(type, radius, corner, flute, f);
-  // The teeth: the type checks here, the ranges in CutterTeeth::make (one place).
+  // The teeth: the types checked here, the ranges in CutterTeeth::make (one place).
   const CutterTeeth defaults;
-  const int64_t flutes =
-      wholeNumber(tool, "flutes", f + ".flutes", 1, 16, defaults.flutes, "a number of teeth");
+  const int64_t flutes = wholeNumber(tool, "flutes", f + ".flutes", defaults.flutes, "teeth");
   const double helix = number(tool, "helix_deg", f + ".helix_deg", &defaults.helixDeg);
   const double runout = number(tool, "runout_mm", f + ".runout_mm", &defaults.runout);
   const double phase =

@@ -43,15 +43,14 @@ double number(const json& obj, const std::string& key, const std::string& field,
   return d;
 }
 
-int64_t wholeNumber(const json& obj, const std::string& key, const std::string& field, int64_t lo,
-                    int64_t hi, int64_t fallback, const char* what) {
+int64_t wholeNumber(const json& obj, const std::string& key, const std::string& field,
+                    int64_t fallback, const char* what) {
   if (!obj.contains(key)) return fallback;
   const json& v = obj.at(key);
-  const std::string expected = std::string("expected ") + what + ", a whole number from " +
-                               std::to_string(lo) + " to " + std::to_string(hi) + ", got ";
+  const std::string expected = std::string("expected a whole number of ") + what + ", got ";
   if (!v.is_number()) throw InputError(field, expected + v.dump());
   const double d = v.get<double>();
-  if (!(d >= double(lo) && d <= double(hi)) || d != std::floor(d))
+  if (!(std::fabs(d) <= kMaxMagnitudeMm) || d != std::floor(d))
     throw InputError(field, expected + v.dump());
   return int64_t(d);
 }

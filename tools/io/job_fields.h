@@ -26,10 +26,11 @@ void rejectUnknownKeys(const nlohmann::json& obj, const std::set<std::string>& k
 double number(const nlohmann::json& obj, const std::string& key, const std::string& field,
               const double* fallback = nullptr);
 
-// A whole number in [lo, hi] (JSON 2 or 2.0; not 2.5, "2" or true); `fallback` if
-// the key is absent. `what` names the quantity in the message ("a number of teeth").
+// A whole number within +-1e6 (JSON 2 or 2.0; not 2.5, "2" or true); `fallback` if the
+// key is absent. `what` names the quantity in the message ("teeth"); the caller checks
+// the range that means something.
 int64_t wholeNumber(const nlohmann::json& obj, const std::string& key, const std::string& field,
-                    int64_t lo, int64_t hi, int64_t fallback, const char* what);
+                    int64_t fallback, const char* what);
 
 // [x, y, z], three finite numbers within +-1e6 mm.
 Vec3 point(const nlohmann::json& obj, const std::string& key, const std::string& field);
