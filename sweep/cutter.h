@@ -17,8 +17,8 @@ const char* toString(CutterType type);
 // Parses "ball" | "flat" | "bull"; throws InputError naming `field` otherwise.
 CutterType parseCutterType(const std::string& name, const std::string& field = "tool.type");
 
-// The cutting edges (CONVENTIONS.md cutter keys `flutes`, `helix_deg`, `runout_mm`,
-// `runout_phase_deg`; docs/algorithm.md "Teeth"). Only the "teeth" cutting model reads
+// The cutting edges (cutter keys `flutes`, `helix_deg`, `runout_mm`,
+// `runout_phase_deg`: docs/teeth.md, docs/algorithm.md). Only the "teeth" cutting model reads
 // them; the envelope model sweeps the solid of revolution.
 //   * `flutes` teeth at body angles psi_k = 2 pi k / flutes, each an edge running along
 //     the whole meridian profile: from the axis across the flat bottom (radius Rb),

@@ -1,4 +1,4 @@
-// CuttingModel: what surface a cutter leaves (CONVENTIONS.md job key `cutting`).
+// CuttingModel: what surface a cutter leaves (job key `cutting`, docs/teeth.md).
 //   * Envelope: the lowest point of the swept solid of revolution, the limit of an
 //     infinitely fine feed (swept_move.h).
 //   * Teeth: the lowest point that any cutting edge passes through (tooth_sweep.h). The
