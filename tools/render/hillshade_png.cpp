@@ -52,18 +52,12 @@ double writeHillshadePng(const ZMap& map, const std::string& path, const Hillsha
     preview.textureBoost = 1;  // one exaggeration, as the grey picture
     return writePreviewPng(map, path, preview);
   }
-  if (map.nx() <= 0 || map.ny() <= 0) throw InputError(path, "cannot draw an empty height map");
-  if (!(map.grid().spacing > 0) || !std::isfinite(map.grid().spacing))
-    throw InputError(path, fmt::format("grid spacing {} mm is not positive", map.grid().spacing));
-  const int maxPixels = std::max(16, options.maxPixels);
-  const HeightRaster grid = reduceMap(map, maxPixels);
-  const int gridLong = std::max(grid.w, grid.h);
-  const int up =
-      std::max(1, std::min((options.minPixels + gridLong - 1) / gridLong, maxPixels / gridLong));
-  const Slopes slope = slopes(grid);
-  const double exaggeration =
-      std::isnan(options.exaggeration) ? automaticExaggeration(slope) : options.exaggeration;
-  const std::vector<double> shade = lambert(slope, exaggeration, options.light);
+  const ReliefGrid relief =
+      reliefGridOf(map, path, options.maxPixels, options.minPixels, options.exaggeration);
+  const HeightRaster& grid = relief.grid;
+  const int up = relief.up;
+  const double exaggeration = relief.exaggeration;
+  const std::vector<double> shade = lambert(relief.slope, exaggeration, options.light);
 
   // Layout, px: title, map, scale bar, legend.
   constexpr int s = 2;  // font scale

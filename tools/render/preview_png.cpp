@@ -76,17 +76,12 @@ std::vector<Tick> colourBarTicks(double zmin, double zmax, int barH, int textH) 
 }  // namespace
 
 double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOptions& options) {
-  if (map.nx() <= 0 || map.ny() <= 0) throw InputError(path, "cannot draw an empty height map");
-  if (!(map.grid().spacing > 0) || !std::isfinite(map.grid().spacing))
-    throw InputError(path, fmt::format("grid spacing {} mm is not positive", map.grid().spacing));
-  const int maxPixels = std::max(16, options.maxPixels);
-  const HeightRaster grid = reduceMap(map, maxPixels);
-  const int gridLong = std::max(grid.w, grid.h);
-  const int up =
-      std::max(1, std::min((options.minPixels + gridLong - 1) / gridLong, maxPixels / gridLong));
-  const Slopes slope = slopes(grid);
-  const double exaggeration =
-      std::isnan(options.exaggeration) ? automaticExaggeration(slope) : options.exaggeration;
+  const ReliefGrid relief =
+      reliefGridOf(map, path, options.maxPixels, options.minPixels, options.exaggeration);
+  const HeightRaster& grid = relief.grid;
+  const Slopes& slope = relief.slope;
+  const int up = relief.up;
+  const double exaggeration = relief.exaggeration;
   double boost = options.textureBoost;
   std::vector<double> light;
   if (boost == 1) {

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sweep/input_error.h"
+
 namespace scallop {
 
 namespace {
@@ -133,6 +135,21 @@ std::vector<std::string> reliefLegend(double exaggeration, const Light& light, d
         fmt::format("texture finer than {}: heights \u00d7 {:.3g}", size, exaggeration * boost));
   }
   return lines;
+}
+
+ReliefGrid reliefGridOf(const ZMap& map, const std::string& path, int maxPixels, int minPixels,
+                        double exaggeration) {
+  if (map.nx() <= 0 || map.ny() <= 0) throw InputError(path, "cannot draw an empty height map");
+  if (!(map.grid().spacing > 0) || !std::isfinite(map.grid().spacing))
+    throw InputError(path, fmt::format("grid spacing {} mm is not positive", map.grid().spacing));
+  ReliefGrid out;
+  maxPixels = std::max(16, maxPixels);
+  out.grid = reduceMap(map, maxPixels);
+  const int gridLong = std::max(out.grid.w, out.grid.h);
+  out.up = std::max(1, std::min((minPixels + gridLong - 1) / gridLong, maxPixels / gridLong));
+  out.slope = slopes(out.grid);
+  out.exaggeration = std::isnan(exaggeration) ? automaticExaggeration(out.slope) : exaggeration;
+  return out;
 }
 
 }  // namespace scallop

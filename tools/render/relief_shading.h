@@ -69,6 +69,19 @@ double automaticTextureBoost(const Slopes& all, const Slopes& texture, double ex
 // all + (boost - 1) texture: the slopes of the heights with their texture scaled by boost.
 Slopes boosted(const Slopes& all, const Slopes& texture, double boost);
 
+// What both pictures (preview.png, the grey hill-shade picture) start from: the map
+// reduced to at most `maxPixels` a side, the factor `up` that enlarges it towards
+// `minPixels`, its slopes and the exaggeration (`exaggeration`, or automatic when NaN).
+// Throws InputError naming `path` for an empty map or a spacing that is not positive.
+struct ReliefGrid {
+  HeightRaster grid;
+  int up = 1;
+  Slopes slope;
+  double exaggeration = 1;
+};
+ReliefGrid reliefGridOf(const ZMap& map, const std::string& path, int maxPixels, int minPixels,
+                        double exaggeration);
+
 // The Lambert term of every cell, max(0, n . l): n the unit normal of the surface with
 // its heights multiplied by `exaggeration`, (-e dz/dx, -e dz/dy, 1) / |.|, and l the
 // unit vector towards the light, (cos(el) sin(az), cos(el) cos(az), sin(el)).
