@@ -17,11 +17,14 @@
 // Finding every root. phi turns at phaseRate (rad per unit t), 2 pi / flutes in one
 // tooth period; theta and h move with the line's motion relative to the cutter, slowly
 // except near the cutter's axis (theta turns fast; every edge meets there) and the
-// silhouette (E and X meet). F is sampled a quarter tooth period apart; an interval
-// whose angle theta moves by more than half of what phi does, or that straddles the
-// silhouette, is halved (down to 1e-13 in t). On the intervals left F is monotone, so
-// its integers between the end values are all its roots; each is solved by bracketed
-// regula falsi until F's residual times dz/dF is below 1e-13 mm.
+// silhouette (E and X meet). F is sampled a quarter tooth period apart; an interval on
+// which the point's own turn (theta less the helix's lag) exceeds half of the spindle's,
+// or whose ends meet different faces, is halved. On the intervals left F is monotone,
+// so its integers between the end values are all its roots; each is solved by bracketed
+// regula falsi until F's residual times dz/dF is below 1e-13 mm. Halving stops at
+// leaves of 1/256 of a tooth period where the faces agree (the point sweeping round
+// near the axis, where F's end values show the crossing the sweep makes), and a search
+// has a budget of halvings past which it counts as unproven.
 //
 // Which intervals matter. Every edge point lies in the spindle envelope (the solid of
 // revolution holding the cutter at every spindle angle), so a crossing at t is no lower
@@ -32,8 +35,8 @@
 //   * the scan starts at t* and runs outward, stopping where h >= the best crossing;
 //   * an interval is solved only where the tangent lines at its ends allow a height
 //     below the best;
-//   * without runout X(t).z is concave in t (the top of a convex set's slice), so an
-//     interval's exit crossings lie at or above the lower of its end values.
+//   * exit points are skipped over an interval where a solid inside every cutter of it
+//     (exitBound) lies above the best.
 // A turning move's h is not convex; its whole [0, 1] is scanned and an interval is
 // skipped only when ray clearance proves the envelope above the best over it
 // (ray_clearance.h). The result is the least crossing height: the pruning only drops

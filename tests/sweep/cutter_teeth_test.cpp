@@ -1,7 +1,7 @@
 // The teeth's premises (sweep/cutter.h CutterTeeth, sweep/tooth_sweep.h): validation of
 // the keys, the spindle envelope that bounds every edge point (the crossing search's
-// lower bound), the edges lying on the cutter's surface, and the spindle angle carried
-// along a path (sweepToolPath), rapids included.
+// lower bound), the edges lying on the cutter's surface, and moves without a feed per
+// tooth refused. (The spindle angle along a path: tooth_sweep_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -121,64 +121,6 @@ TEST(CutterTeeth, EveryEdgePointLiesOnTheCutterAndInsideTheSpindleEnvelope) {
     }
   }
   std::printf("edge points checked: %d\n", checked);
-}
-
-// The spindle angle runs on along the path: a move's heights equal those of the same
-// move swept alone with phi0 = the angle the path reached at its start, rapids included.
-TEST(CutterTeeth, SpindleAngleRunsOnAlongThePathThroughRapids) {
-  Cutter c = Cutter::make(CutterType::Ball, 3);
-  const Vec3 axis = normalize(Vec3{std::sin(0.26), 0, std::cos(0.26)});
-  ToolPath path;
-  Move a;
-  a.from = {{-5, 0, 0}, axis};
-  a.to = {{0, 0, 0}, axis};
-  Move rapid;
-  rapid.rapid = true;
-  rapid.from = a.to;
-  rapid.to = {{0, 0.5, 2}, axis};
-  Move b;
-  b.from = {{0, 0.5, 2}, axis};
-  b.to = {{0, 0.5, 0.05}, axis};  // a plunge
-  Move d;
-  d.from = b.to;
-  d.to = {{6, 0.5, 0.05}, axis};
-  path.moves = {a, rapid, b, d};
-  CuttingModel cm;
-  cm.kind = CuttingModelKind::Teeth;
-  cm.feedPerTooth = 0.07;
-  cm.phaseDeg = 33;
-  const std::vector<SweptMove> moves = sweepToolPath(c, path, cm);
-  ASSERT_EQ(moves.size(), 3u);
-  // s at d's start: 5 + |rapid| + 1.95 mm; phi = phi0 + 2 pi s / (2 fz).
-  const double s = 5 + length(rapid.to.tip - rapid.from.tip) + 1.95;
-  ToolPath alone;
-  alone.moves = {d};
-  CuttingModel cmAlone = cm;
-  cmAlone.phaseDeg = std::fmod(33 + 360 * s / (2 * 0.07), 360);
-  const std::vector<SweptMove> single = sweepToolPath(c, alone, cmAlone);
-  double worst = 0;
-  int hits = 0;
-  for (int i = 0; i < 200; ++i) {
-    const double x = 1 + 4.0 * i / 200, y = 0.5 + 0.3 * std::sin(i);
-    const LowestPoint p = moves[2].lowestPoint(x, y), q = single[0].lowestPoint(x, y);
-    ASSERT_EQ(p.hit, q.hit);
-    if (!p.hit) continue;
-    ++hits;
-    worst = std::max(worst, std::fabs(p.z - q.z));
-  }
-  EXPECT_GT(hits, 150);
-  // Both sum the same lengths; the angle's rounding (~1e-13 rad) moves heights by less.
-  EXPECT_LT(worst, 1e-9);
-  // A different phase gives different marks: the comparison can fail.
-  cmAlone.phaseDeg += 40;
-  const std::vector<SweptMove> shifted = sweepToolPath(c, alone, cmAlone);
-  double moved = 0;
-  for (int i = 0; i < 200; ++i) {
-    const double x = 1 + 4.0 * i / 200, y = 0.5;
-    moved =
-        std::max(moved, std::fabs(moves[2].lowestPoint(x, y).z - shifted[0].lowestPoint(x, y).z));
-  }
-  EXPECT_GT(moved, 1e-5);
 }
 
 TEST(CutterTeeth, SweepRefusesMovesWithoutAFeedPerTooth) {
