@@ -111,6 +111,13 @@ PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& 
   return c;
 }
 
+namespace {
+// A direction not parallel to the unit vector a.
+Vec3 acrossHelper(const Vec3& a) {
+  return std::fabs(a.x) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+}
+}  // namespace
+
 PoseCurve PoseCurve::jointLinear(const TableMachine& machine, const RotaryMotion& m) {
   const bool bc = machine.kinematics == RotaryKinematics::TableBC;
   PoseCurve c =
@@ -201,6 +208,27 @@ Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
   const double tiltB = tilt0_ + dTilt_ * tb, spinB = spin0_ + dSpin_ * tb;
   if (tableBC()) return rotZ(rotY(rotY(rotZ(v, spinA), tiltA), -tiltB), -spinB);
   return rotZ(rotX(rotX(rotZ(v, spinA), tiltA), -tiltB), -spinB);
+}
+
+PoseFrame PoseCurve::frame(double t) const {
+  PoseFrame f;
+  f.t = t;
+  f.tip = tip(t);
+  f.velocity = tipVelocity(t);
+  f.acceleration = tipAcceleration(t);
+  f.axis = axis(t);
+  if (kind_ == Kind::Slerp) {
+    // The rotation is about w = u x v, which lies across every axis of the move.
+    f.e1 = omega_ > 0 ? cross(u_, v_) : normalize(cross(u_, acrossHelper(u_)));
+    f.spin = omega_ > 0 ? f.e1 * phi_ : Vec3{};
+  } else {
+    // A unit vector across the start axis, carried to t (less the carry's round-off).
+    const Vec3 e = carry(normalize(cross(u_, acrossHelper(u_))), 0, t);
+    f.e1 = normalize(e - f.axis * dot(e, f.axis));
+    f.spin = spin(t), f.spinRate = spinRate(t);
+  }
+  f.e2 = cross(f.axis, f.e1);
+  return f;
 }
 
 Vec3 PoseCurve::spin(double t) const {

@@ -45,6 +45,15 @@ Vec3 machineAxis(RotaryKinematics kinematics, double tilt, double spin);
 // X Y Z (mm) at tilt and spin (radians), LinuxCNC's trtfuncs formulas.
 Vec3 machineTip(const TableMachine& machine, const Vec3& joints, double tilt, double spin);
 
+// Everything the kernel asks of a curve at one t, computed together (one sine and cosine
+// for slerp): see PoseCurve's accessors of the same names.
+struct PoseFrame {
+  double t = 0;
+  Vec3 tip, velocity, acceleration;  // tip(t), tipVelocity(t), tipAcceleration(t)
+  Vec3 axis, e1, e2;                 // axis(t) and crossFrame(t)
+  Vec3 spin, spinRate;               // spin(t), spinRate(t)
+};
+
 class PoseCurve {
  public:
   // CL data: tip linear, axis = slerp(a0, a1, t). Axes are normalised here. Throws
@@ -80,6 +89,11 @@ class PoseCurve {
   // cutter has n' = Omega x n) and its derivative Omega'(t).
   Vec3 spin(double t) const;
   Vec3 spinRate(double t) const;
+  // The pose at t with two unit directions e1, e2 across the axis, fixed to the cutter
+  // (carried by R(t)), so that (e1, e2, axis) is a right-handed orthonormal frame turning
+  // with the cutter: a cutter point k = alpha e1 + beta e2 + s axis has dk/dt = spin x k.
+  // For slerp e1 is the fixed turning axis itself (no trigonometry beyond axis(t)).
+  PoseFrame frame(double t) const;
   // A direction fixed to the cutter, carried from its pose at ta to its pose at tb:
   // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: swept_move.cpp.)
   Vec3 carry(const Vec3& v, double ta, double tb) const;

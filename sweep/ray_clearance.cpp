@@ -155,16 +155,13 @@ bool curvatureClears(const CoreDistance& core, const Vec3& p, const Vec3& v, dou
   return h0 + h1 * tau + 0.5 * k * tau * tau > core.r + slack * (1 + h0);
 }
 
-}  // namespace
-
-bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor, double t0,
-                   double t1, bool* insideAtAnchor) {
-  if (insideAtAnchor) *insideAtAnchor = false;
-  if (!(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
-  const Vec3 tip = curve.tip(anchor), axis = curve.axis(anchor), vel = curve.tipVelocity(anchor);
+// The proof from the pose at the anchor (tip, axis, tip velocity and spin there).
+bool clearsFrom(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor,
+                const Vec3& tip, const Vec3& axis, const Vec3& vel, const Vec3& spin, double t0,
+                double t1, bool* insideAtAnchor) {
   const double omega = curve.turnRate(), A = curve.tipAccelBound();
   const Vec3 g0 = q - tip;
-  const Vec3 g1 = -vel - cross(curve.spin(anchor), g0);  // gamma'(anchor)
+  const Vec3 g1 = -vel - cross(spin, g0);  // gamma'(anchor)
   const double left = anchor - t0, right = t1 - anchor, reach = std::max(left, right);
   const double move = length(vel) + A * reach;  // >= |tip'| over the range
   const double D = length(g0) + move * reach;
@@ -183,6 +180,24 @@ bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, doubl
   // Step 2: the curvature bound in one go where it applies, else rungs on both sides.
   if (curvatureClears(core, g0, g1, left, right, E, slack)) return true;
   return sideClears(core, g0, g1, right, E, slack) && sideClears(core, g0, -g1, left, E, slack);
+}
+
+}  // namespace
+
+bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor, double t0,
+                   double t1, bool* insideAtAnchor) {
+  if (insideAtAnchor) *insideAtAnchor = false;
+  if (!(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
+  return clearsFrom(c, curve, q, anchor, curve.tip(anchor), curve.axis(anchor),
+                    curve.tipVelocity(anchor), curve.spin(anchor), t0, t1, insideAtAnchor);
+}
+
+bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, const PoseFrame& anchor,
+                   double t0, double t1, bool* insideAtAnchor) {
+  if (insideAtAnchor) *insideAtAnchor = false;
+  if (!(c.cornerRadius > 0) || !(t0 <= anchor.t && anchor.t <= t1)) return false;
+  return clearsFrom(c, curve, q, anchor.t, anchor.tip, anchor.axis, anchor.velocity, anchor.spin,
+                    t0, t1, insideAtAnchor);
 }
 
 double lowestPointCurvature(const Cutter& c, const PoseCurve& curve, double t, const Vec3& p) {

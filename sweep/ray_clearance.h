@@ -25,6 +25,9 @@ namespace scallop {
 // and corner (K' below) at the anchor itself: no other anchor can clear it either.
 bool rayClearsMove(const Cutter& cutter, const PoseCurve& curve, const Vec3& q, double anchor,
                    double t0, double t1, bool* insideAtAnchor = nullptr);
+// The same from a pose already computed at the anchor (anchor.t).
+bool rayClearsMove(const Cutter& cutter, const PoseCurve& curve, const Vec3& q,
+                   const PoseFrame& anchor, double t0, double t1, bool* insideAtAnchor = nullptr);
 
 // d^2 f / dt^2 at t for the lowest point f(t) of K(t) on the vertical line through p,
 // p being that lowest point (on K(t)'s boundary): the Newton step of the search's

@@ -76,6 +76,7 @@
 #include <new>
 
 #include "sweep/ray_clearance.h"
+#include "sweep/rim_contact.h"
 
 namespace scallop {
 
@@ -266,6 +267,20 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
         (!inside && rayClearsMove(c, curve_, q, 0, 0, 0.5) &&
          rayClearsMove(c, curve_, q, 1, 0.5, 1)))
       return {};
+  }
+  // Step 6: the rim contact located by Newton's method over (t, phi) from the middle of
+  // the move (rim_contact.h), and its height proven lowest at once by step 4b's ray
+  // clearance: on corner contacts (every bull and ball on CAM paths) no stationary
+  // search at all. Where Newton stops or the proof fails (flat faces, flanks, a line
+  // leaving the cutter), the certified search below decides, from scratch.
+  if (c.cornerRadius > 0) {
+    const RimContact rim = locateRimContact(c, curve_, x, y, 0.5);
+    if (rim.found && rayClearsMove(c, curve_, {x, y, rim.z - kProofGap}, rim.pose, 0, 1)) {
+      if (!(rim.z < cutoff)) return {};
+      LowestPoint out;
+      out.hit = true, out.z = rim.z, out.normal = rim.normal, out.t = rim.t;
+      return out;
+    }
   }
   const double omega = curve_.turnRate();
   const TipBounds tipMotion = tipBoundsOf(curve_, tipSpeed_);
