@@ -93,6 +93,7 @@ PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where)
   c.phi_ = phi;
   c.v_ = normalize(a1 - a0 * dot(a0, a1));
   c.omega_ = phi;
+  c.axisMiddle_ = c.u_ * std::cos(phi * 0.5) + c.v_ * std::sin(phi * 0.5);  // axis(0.5)
   return c;
 }
 
@@ -189,7 +190,11 @@ Vec3 PoseCurve::tip(double t) const {
 Vec3 PoseCurve::axis(double t) const {
   if (omega_ == 0 || t <= 0) return u_;
   if (t >= 1) return a1_;
-  if (kind_ == Kind::Slerp) return u_ * std::cos(phi_ * t) + v_ * std::sin(phi_ * t);
+  if (kind_ == Kind::Slerp) {
+    // The middle, where every search starts, is kept: the same bits without the sine.
+    if (t == 0.5) return axisMiddle_;
+    return u_ * std::cos(phi_ * t) + v_ * std::sin(phi_ * t);
+  }
   const RotaryKinematics kin = tableBC() ? RotaryKinematics::TableBC : RotaryKinematics::TableAC;
   return machineAxis(kin, tilt0_ + dTilt_ * t, spin0_ + dSpin_ * t);
 }

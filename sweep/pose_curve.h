@@ -115,6 +115,7 @@ class PoseCurve {
   // Slerp: axis(t) = u_ cos(phi t) + v_ sin(phi t), with u_ = a0, v_ the unit vector
   // across it towards a1, and the exact end axis a1_ returned at t = 1.
   Vec3 u_, v_, a1_;
+  Vec3 axisMiddle_;  // axis(0.5), computed once
   double phi_ = 0;
   // Rotary: tilt (B or A) and spin (C) angles at t = 0 and their changes, radians.
   double tilt0_ = 0, dTilt_ = 0, spin0_ = 0, dSpin_ = 0;

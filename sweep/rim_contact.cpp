@@ -37,9 +37,10 @@ namespace scallop {
 namespace {
 
 constexpr int kMaxSteps = 12;
-// mm: Newton's decrement at which g is taken as converged, 1000 times below the proof gap
-// (a smaller one would only cost a step: the proof decides either way).
-constexpr double kDecrementDone = 1e-12;
+// mm: Newton's decrement (about how far g lies above its minimum) at which g is taken as
+// converged: 10 times below the proof gap, so the proof that follows has room to close;
+// a smaller one costs a step more for heights no more proven.
+constexpr double kDecrementDone = 1e-10;
 
 // g and its first and second partial derivatives at (t, phi); ok = false where l misses
 // the ball round c (|D| >= r, to a margin).
@@ -103,17 +104,21 @@ void startDirection(const Cutter& cutter, const PoseFrame& f, double x, double y
 }  // namespace
 
 RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double x, double y,
-                            double t0) {
+                            const RimStart& start) {
   RimContact out;
   if (!(cutter.cornerRadius > 0)) return out;
   const bool ball = !(cutter.bottomRadius() > 0);  // phi plays no part
-  double t = std::clamp(t0, 0.0, 1.0);
+  double t = std::clamp(start.t, 0.0, 1.0);
   // phi is carried as the unit vector (cos phi, sin phi): a step d phi moves it along its
   // tangent and renormalises, which is as good a point of the circle as any and needs no
   // trigonometry.
   double cs = 1, sn = 0;
   PoseFrame f = curve.frame(t);
-  if (!ball) startDirection(cutter, f, x, y, cs, sn);
+  if (start.hasDirection) {
+    cs = start.cosPhi, sn = start.sinPhi;
+  } else if (!ball) {
+    startDirection(cutter, f, x, y, cs, sn);
+  }
   for (int step = 0; step < kMaxSteps; ++step) {
     if (step > 0) f = curve.frame(t);
     const Local L = evaluate(cutter, f, x, y, cs, sn);
@@ -141,6 +146,7 @@ RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double
     if (-0.5 * (L.gt * dt + L.gp * dp) <= kDecrementDone) {
       out.found = true;
       out.t = t, out.z = L.g, out.normal = L.normal, out.pose = f;
+      out.cosPhi = cs, out.sinPhi = sn;
       out.iterations = step;
       return out;
     }

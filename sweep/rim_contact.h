@@ -12,19 +12,29 @@
 
 namespace scallop {
 
+// Where Newton's method starts: t, and the rim direction (cos phi, sin phi) in the
+// cutter's turning frame (PoseFrame e1, e2) when one is known; otherwise the direction
+// towards the point where the line crosses the rim's plane.
+struct RimStart {
+  double t = 0.5;
+  bool hasDirection = false;
+  double cosPhi = 1, sinPhi = 0;
+};
+
 struct RimContact {
-  bool found = false;  // false: Newton left its safe region; nothing below is set
-  double t = 0;        // pose parameter of the contact, in [0, 1]
-  double z = 0;        // mm: the height of the point (x, y, z), which lies in K(t)
-  Vec3 normal;         // outward unit normal of K(t) there, normal.z < 0
-  PoseFrame pose;      // the pose at t (for the proof that follows)
-  int iterations = 0;  // Newton steps taken
+  bool found = false;             // false: Newton left its safe region; nothing below is set
+  double t = 0;                   // pose parameter of the contact, in [0, 1]
+  double z = 0;                   // mm: the height of the point (x, y, z), which lies in K(t)
+  double cosPhi = 1, sinPhi = 0;  // the rim point's direction in the turning frame
+  Vec3 normal;                    // outward unit normal of K(t) there, normal.z < 0
+  PoseFrame pose;                 // the pose at t (for the proof that follows)
+  int iterations = 0;             // Newton steps taken
 };
 
 // Locates the lowest point over t in [0, 1] of the spheres of radius r round the rim
-// circle of K(t) on the vertical line through (x, y), from the start t0 (phi starts where
-// the line crosses the rim's plane). Needs cornerRadius > 0.
+// circle of K(t) on the vertical line through (x, y), from `start`. Needs
+// cornerRadius > 0.
 RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double x, double y,
-                            double t0);
+                            const RimStart& start = {});
 
 }  // namespace scallop

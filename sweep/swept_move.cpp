@@ -75,6 +75,7 @@
 #include <limits>
 #include <new>
 
+#include "sweep/contact_knots.h"
 #include "sweep/ray_clearance.h"
 #include "sweep/rim_contact.h"
 
@@ -160,7 +161,7 @@ SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
     segment_ = std::make_shared<const SweptSegment>(cutter, curve_.tipStart(), curve_.tipEnd(),
                                                     curve_.axis(0));
   else
-    tipSpeed_ = tipSpeedBound(curve_), zTop_ = support({0, 0, 1});
+    tipSpeed_ = tipSpeedBound(curve_), zTop_ = support({0, 0, 1}), knotsId_ = newContactKnotsId();
 }
 
 SweptMove::SweptMove(const SweptSegment& segment)
@@ -255,15 +256,18 @@ LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double
 
 LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) const {
   const Cutter& c = cutter_;
+  // Where the rim contact is expected (contact_knots.h): the anchor of step 4a's proof
+  // and the start of step 6's Newton.
+  const RimStart start = c.cornerRadius > 0 ? contactStart(knotsId_, c, curve_, x, y) : RimStart{};
   // Step 4a: a move the ray-clearance proof puts above the cutoff is a miss, found
   // without a single stationary search (ray_clearance.h).
   if (cutoff < HUGE_VAL) {
     const Vec3 q{x, y, cutoff};
-    // From the middle first; where the motion curves too much for one tangent line,
-    // from each end over its half (the curve's term falls fourfold), unless q lies in the
-    // cutter at the middle.
+    // From the expected contact first; where the motion curves too much for one tangent
+    // line, from each end over its half (the curve's term falls fourfold), unless q lies
+    // in the cutter at the anchor.
     bool inside = false;
-    if (rayClearsMove(c, curve_, q, 0.5, 0, 1, &inside) ||
+    if (rayClearsMove(c, curve_, q, start.t, 0, 1, &inside) ||
         (!inside && rayClearsMove(c, curve_, q, 0, 0, 0.5) &&
          rayClearsMove(c, curve_, q, 1, 0.5, 1)))
       return {};
@@ -274,7 +278,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   // search at all. Where Newton stops or the proof fails (flat faces, flanks, a line
   // leaving the cutter), the certified search below decides, from scratch.
   if (c.cornerRadius > 0) {
-    const RimContact rim = locateRimContact(c, curve_, x, y, 0.5);
+    const RimContact rim = locateRimContact(c, curve_, x, y, start);
     if (rim.found && rayClearsMove(c, curve_, {x, y, rim.z - kProofGap}, rim.pose, 0, 1)) {
       if (!(rim.z < cutoff)) return {};
       LowestPoint out;

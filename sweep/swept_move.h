@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 
 #include "sweep/cutter.h"
@@ -87,9 +88,10 @@ class SweptMove {
   PoseCurve curve_;
   std::shared_ptr<const SweptSegment> segment_;  // constant axis only
   std::shared_ptr<const ToothSweep> teeth_;      // the "teeth" cutting model only
-  double reach_ = 0;     // farthest cutter point from the tip, hypot(L, R), mm
-  double zTop_ = 0;      // turning: an upper bound of the solid's highest z, mm
-  double tipSpeed_ = 0;  // turning: >= |d tip / dt| over the move, mm per unit t
+  double reach_ = 0;      // farthest cutter point from the tip, hypot(L, R), mm
+  double zTop_ = 0;       // turning: an upper bound of the solid's highest z, mm
+  double tipSpeed_ = 0;   // turning: >= |d tip / dt| over the move, mm per unit t
+  uint64_t knotsId_ = 0;  // turning: its rim-contact knots' identity (contact_knots.h)
 };
 
 }  // namespace scallop

@@ -1,0 +1,29 @@
+// ContactKnots: where to start a turning move's rim-contact search (rim_contact.h) on a
+// vertical line, interpolated from the contacts located at the four surrounding knots of
+// a fixed lattice in the plane. The start depends on (move, x, y) alone, so the height
+// found from it does too, on any thread and in any order; knots once located are kept
+// per thread in a small cache, so neighbouring lines share them.
+#pragma once
+
+#include <cstdint>
+
+#include "sweep/cutter.h"
+#include "sweep/pose_curve.h"
+#include "sweep/rim_contact.h"
+
+namespace scallop {
+
+// The lattice's spacing, mm: knots at (i, j) / 64 mm for integer i, j. Contacts move
+// smoothly with the line, so a bilinear start from 16 um away is within ~1e-3 of t and
+// Newton's method needs one or two steps instead of four.
+constexpr double kContactKnotSpacing = 1.0 / 64;
+
+// A new identity for a move's knots in the caches (never 0; copies of a move share it).
+uint64_t newContactKnotsId();
+
+// The start for the line through (x, y): the knots' contacts interpolated where all four
+// knots have one, else the default start (the middle of the move).
+RimStart contactStart(uint64_t id, const Cutter& cutter, const PoseCurve& curve, double x,
+                      double y);
+
+}  // namespace scallop
