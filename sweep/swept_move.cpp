@@ -64,9 +64,15 @@
 //      minimum, with z = U - 1e-9 and the best sample as the anchor: the whole move is
 //      proven at once, in place of step 3's ladder of intervals (B3: 99.99 % of the
 //      searches that reach it). Where it fails, step 3 goes on as before.
-//   The search's order depends on (x, y) alone (the cutoff only stops it, and step 4a
-//   only returns a miss), so the height returned is the same whatever was evaluated
-//   before, on any thread.
+//   6. The rim contact: where the cutter meets l on its corner, the lowest point is the
+//      minimum over (t, phi) of the balls round C's rim, located by Newton's method
+//      (rim_contact.cpp) from the contact interpolated at fixed knots (contact_knots.cpp)
+//      and proven by step 4b from its t: on CAM paths ~1.5 evaluations of a closed form
+//      and one proof, no stationary search. The order: 4a (anchored at the knots' t),
+//      6, then where 6 fails 5 and 3 from scratch.
+//   The search's order depends on (x, y) alone (the cutoff only stops it, step 4a only
+//   returns a miss, and the knots are a function of the move), so the height returned is
+//   the same whatever was evaluated before, on any thread.
 #include "sweep/swept_move.h"
 
 #include <algorithm>
@@ -272,8 +278,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
          rayClearsMove(c, curve_, q, 1, 0.5, 1)))
       return {};
   }
-  // Step 6: the rim contact located by Newton's method over (t, phi) from the middle of
-  // the move (rim_contact.h), and its height proven lowest at once by step 4b's ray
+  // Step 6: the rim contact located by Newton's method over (t, phi) from the knots'
+  // start (rim_contact.h), and its height proven lowest at once by step 4b's ray
   // clearance: on corner contacts (every bull and ball on CAM paths) no stationary
   // search at all. Where Newton stops or the proof fails (flat faces, flanks, a line
   // leaving the cutter), the certified search below decides, from scratch.

@@ -7,7 +7,7 @@
 // swept_move.cpp. Either way the height is the lowest point of the true swept solid,
 // with a proven lower bound within 1e-9 mm of the height returned.
 //
-// Memory: sizeof(SweptMove) bytes per move (360), plus, for a constant-axis
+// Memory: sizeof(SweptMove) bytes per move (440), plus, for a constant-axis
 // move, one SweptSegment on the heap (952 bytes; see bytesPerMove()).
 #pragma once
 
