@@ -306,6 +306,7 @@ SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& opti
   const auto t0 = std::chrono::steady_clock::now();
   impl_->segments = std::move(segments);
   if (impl_->segments.size() > UINT32_MAX) throw std::runtime_error("too many segments");
+  for (SweptMove& s : impl_->segments) s.setContactKnotSpacing(options.contactKnotSpacing);
   impl_->stats.segments = impl_->segments.size();
   double zMin = options.stockTop;
   for (const SweptMove& s : impl_->segments) zMin = std::min(zMin, s.bounds().min.z);

@@ -1,13 +1,14 @@
 // The knots' contacts and their per-thread cache.
 //
 // A knot (i, j) of a move holds the rim contact (t, rim direction) of the vertical line
-// through (i h, j h), h = kContactKnotSpacing, located from the default start; a line
+// through (i h, j h), h the move's knot spacing, located from the default start; a line
 // through (x, y) with i h <= x < (i + 1) h, j h <= y < (j + 1) h starts from the bilinear
 // blend of its four knots. Every value here is a function of the move and the knot, and
 // the cache only saves locating it again: whether an entry was there, or was evicted by
 // another thread's order of work, cannot change a start, hence a height.
 #include "sweep/contact_knots.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -47,25 +48,24 @@ struct KnotCache {
   alignas(64) std::array<KnotCell, kCells> cells;
   alignas(64) std::array<Knot, kKnots> knots;
 
-  const Knot& knot(uint64_t id, int32_t i, int32_t j, const Cutter& cutter,
+  const Knot& knot(uint64_t id, int32_t i, int32_t j, double h, const Cutter& cutter,
                    const PoseCurve& curve) {
     Knot& k = knots[slotHash(id, i, j) & (kKnots - 1)];
     if (k.id != id || k.i != i || k.j != j) {
-      const RimContact rim = locateRimContact(cutter, curve, double(i) * kContactKnotSpacing,
-                                              double(j) * kContactKnotSpacing);
+      const RimContact rim = locateRimContact(cutter, curve, double(i) * h, double(j) * h);
       k.id = id, k.i = i, k.j = j;
       k.t = rim.found ? float(rim.t) : std::numeric_limits<float>::quiet_NaN();
       k.cs = float(rim.cosPhi), k.sn = float(rim.sinPhi);
     }
     return k;
   }
-  const KnotCell& cell(uint64_t id, int32_t i, int32_t j, const Cutter& cutter,
+  const KnotCell& cell(uint64_t id, int32_t i, int32_t j, double h, const Cutter& cutter,
                        const PoseCurve& curve) {
     KnotCell& c = cells[slotHash(id, i, j) & (kCells - 1)];
     if (c.id != id || c.i != i || c.j != j) {
       c.id = id, c.i = i, c.j = j;
       for (int k = 0; k < 4; ++k) {
-        const Knot& corner = knot(id, i + (k & 1), j + (k >> 1), cutter, curve);
+        const Knot& corner = knot(id, i + (k & 1), j + (k >> 1), h, cutter, curve);
         c.t[k] = corner.t, c.cs[k] = corner.cs, c.sn[k] = corner.sn;
       }
     }
@@ -81,16 +81,21 @@ uint64_t newContactKnotsId() {
   return nextId.fetch_add(1, std::memory_order_relaxed);
 }
 
-RimStart contactStart(uint64_t id, const Cutter& cutter, const PoseCurve& curve, double x,
-                      double y) {
+double contactKnotSpacingFor(double cellSpacing) {
+  if (!(cellSpacing > 0)) return kContactKnotSpacing;
+  return std::ldexp(1.0, std::clamp(int(std::lround(std::log2(8 * cellSpacing))), -10, -2));
+}
+
+RimStart contactStart(uint64_t id, double spacing, const Cutter& cutter, const PoseCurve& curve,
+                      double x, double y) {
   // Trivially constructed (zeros: every entry empty), so no guard on each access.
   thread_local KnotCache cache;
-  const double u = x / kContactKnotSpacing, v = y / kContactKnotSpacing;
+  const double u = x / spacing, v = y / spacing;
   const double fi = std::floor(u), fj = std::floor(v);
   RimStart start;
   if (!(std::fabs(fi) < 1e9 && std::fabs(fj) < 1e9)) return start;  // beyond 15 km
   const int32_t i = int32_t(fi), j = int32_t(fj);
-  const KnotCell& cell = cache.cell(id, i, j, cutter, curve);
+  const KnotCell& cell = cache.cell(id, i, j, spacing, cutter, curve);
   const double wx = u - fi, wy = v - fj;
   const double w[4] = {(1 - wx) * (1 - wy), wx * (1 - wy), (1 - wx) * wy, wx * wy};
   double t = 0, cs = 0, sn = 0;

@@ -13,17 +13,24 @@
 
 namespace scallop {
 
-// The lattice's spacing, mm: knots at (i, j) / 64 mm for integer i, j. Contacts move
-// smoothly with the line, so a bilinear start from 16 um away is within ~1e-3 of t and
-// Newton's method needs one or two steps instead of four.
+// The lattice's default spacing h, mm: knots at (i h, j h) for integer i, j. Contacts
+// move smoothly with the line, so a bilinear start from 16 um away is within ~1e-3 of t
+// and Newton's method needs one or two steps instead of four. A scene sets the spacing
+// to about 8 of its cells (SceneOptions::contactKnotSpacing): knots cost about what
+// the cells they serve save.
 constexpr double kContactKnotSpacing = 1.0 / 64;
 
-// A new identity for a move's knots in the caches (never 0; copies of a move share it).
+// The power of two nearest to 8 cells of `cellSpacing` mm, within [1/1024, 1/4] mm.
+double contactKnotSpacingFor(double cellSpacing);
+
+// A new identity for a move's knots in the caches (never 0): one for each move and
+// spacing (copies of a move share it).
 uint64_t newContactKnotsId();
 
-// The start for the line through (x, y): the knots' contacts interpolated where all four
-// knots have one, else the default start (the middle of the move).
-RimStart contactStart(uint64_t id, const Cutter& cutter, const PoseCurve& curve, double x,
-                      double y);
+// The start for the line through (x, y): the contacts of the knots of spacing `spacing`
+// interpolated where all four knots have one, else the default start (the middle of the
+// move). `id` names the move and the spacing.
+RimStart contactStart(uint64_t id, double spacing, const Cutter& cutter, const PoseCurve& curve,
+                      double x, double y);
 
 }  // namespace scallop

@@ -46,11 +46,11 @@ Vec3 machineAxis(RotaryKinematics kinematics, double tilt, double spin);
 Vec3 machineTip(const TableMachine& machine, const Vec3& joints, double tilt, double spin);
 
 // Everything the kernel asks of a curve at one t, computed together (one sine and cosine
-// for slerp): see PoseCurve's accessors of the same names.
+// for slerp): see PoseCurve's accessors of the same names and PoseCurve::frame.
 struct PoseFrame {
   double t = 0;
   Vec3 tip, velocity, acceleration;  // tip(t), tipVelocity(t), tipAcceleration(t)
-  Vec3 axis, e1, e2;                 // axis(t) and crossFrame(t)
+  Vec3 axis, e1, e2;                 // axis(t) and the turning frame across it
   Vec3 spin, spinRate;               // spin(t), spinRate(t)
 };
 

@@ -4,7 +4,7 @@
 // radius Rb on the axis from s = r up. Where a bull or ball cutter meets a vertical line
 // l from below on its corner, the nearest point of C is on C's bottom rim, the circle
 //     c(t, phi) = tip(t) + r a(t) + Rb (cos phi e1(t) + sin phi e2(t)),
-// with (e1, e2, a) the frame turning with the cutter (PoseCurve::crossFrame). The ball of
+// with (e1, e2, a) the frame turning with the cutter (PoseCurve::frame). The ball of
 // radius r round c meets l = {(x, y, z)} lowest at
 //     g(t, phi) = c_z - sqrt(r^2 - |D|^2),   D = (c_x - x, c_y - y),
 // and the swept solid's lowest point on l, where it lies on a corner, is the minimum of
@@ -23,10 +23,11 @@
 // from the middle of a move on CAM paths.
 //
 // Why nothing here needs a proof: every (x, y, g(t, phi)) lies on a ball of radius r
-// round a point of C at height s < r along the axis, so in K(t); the height returned is
-// attained, an upper bound of the true lowest point. The caller proves it is the lowest
-// (ray clearance at 1e-9 mm below it) or, where the contact is not on the corner (a flat
-// bottom face, a flank) or Newton stops, runs the certified search.
+// round a point of C, so in K' = C (+) Ball(r), and in K(t) where its height along the
+// axis, r + (p - c).a, is at most the flute length L (checked: a short flute, L < 2r,
+// can fail it); the height returned is attained, an upper bound of the true lowest point. The
+// caller proves it is the lowest (ray clearance at 1e-9 mm below it) or, where the contact is not
+// on the corner (a flat bottom face, a flank) or Newton stops, runs the certified search.
 #include "sweep/rim_contact.h"
 
 #include <algorithm>
@@ -144,6 +145,11 @@ RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double
     // The Newton decrement -grad g . delta / 2 estimates how far g here lies above the
     // minimum (g is nearly quadratic this close): far below the 1e-9 mm proof gap, stop.
     if (-0.5 * (L.gt * dt + L.gp * dp) <= kDecrementDone) {
+      // The point is in K(t) only below the flute top: s = r + (p - c).a <= L, which a
+      // short flute (L < 2r) and a line running up the lean can break (K' has no top,
+      // so the proof would not notice).
+      const double r = cutter.cornerRadius;
+      if (!(r + r * dot(L.normal, f.axis) <= cutter.fluteLength)) return out;
       out.found = true;
       out.t = t, out.z = L.g, out.normal = L.normal, out.pose = f;
       out.cosPhi = cs, out.sinPhi = sn;

@@ -162,7 +162,10 @@ Vec3 steepNormal(const Cutter& c, const Vec3& tip, const Vec3& a, double x, doub
 }  // namespace
 
 SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
-    : cutter_(cutter), curve_(curve), reach_(std::hypot(cutter.fluteLength, cutter.radius)) {
+    : cutter_(cutter),
+      curve_(curve),
+      reach_(std::hypot(cutter.fluteLength, cutter.radius)),
+      knotSpacing_(kContactKnotSpacing) {
   if (curve_.constantAxis())
     segment_ = std::make_shared<const SweptSegment>(cutter, curve_.tipStart(), curve_.tipEnd(),
                                                     curve_.axis(0));
@@ -174,7 +177,15 @@ SweptMove::SweptMove(const SweptSegment& segment)
     : cutter_(segment.cutter()),
       curve_(PoseCurve::linear({segment.start(), segment.axis()}, {segment.end(), segment.axis()})),
       segment_(std::make_shared<const SweptSegment>(segment)),
-      reach_(std::hypot(segment.cutter().fluteLength, segment.cutter().radius)) {}
+      reach_(std::hypot(segment.cutter().fluteLength, segment.cutter().radius)),
+      knotSpacing_(kContactKnotSpacing) {}
+
+void SweptMove::setContactKnotSpacing(double mm) {
+  if (!(mm > 0) || mm == knotSpacing_) return;
+  knotSpacing_ = mm;
+  // The cached knots of the old spacing are another move's now.
+  if (!segment_) knotsId_ = newContactKnotsId();
+}
 
 unsigned long long SweptMove::unprovenSearches() {
   return unprovenCount.load();
@@ -264,7 +275,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   const Cutter& c = cutter_;
   // Where the rim contact is expected (contact_knots.h): the anchor of step 4a's proof
   // and the start of step 6's Newton.
-  const RimStart start = c.cornerRadius > 0 ? contactStart(knotsId_, c, curve_, x, y) : RimStart{};
+  const RimStart start =
+      c.cornerRadius > 0 ? contactStart(knotsId_, knotSpacing_, c, curve_, x, y) : RimStart{};
   // Step 4a: a move the ray-clearance proof puts above the cutoff is a miss, found
   // without a single stationary search (ray_clearance.h).
   if (cutoff < HUGE_VAL) {
@@ -284,7 +296,10 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
   // search at all. Where Newton stops or the proof fails (flat faces, flanks, a line
   // leaving the cutter), the certified search below decides, from scratch.
   if (c.cornerRadius > 0) {
-    const RimContact rim = locateRimContact(c, curve_, x, y, start);
+    RimContact rim = locateRimContact(c, curve_, x, y, start);
+    // A knots' start too far for Newton (coarse knots, a contact that jumps between
+    // them): once more from the middle.
+    if (!rim.found && start.hasDirection) rim = locateRimContact(c, curve_, x, y);
     if (rim.found && rayClearsMove(c, curve_, {x, y, rim.z - kProofGap}, rim.pose, 0, 1)) {
       if (!(rim.z < cutoff)) return {};
       LowestPoint out;

@@ -69,6 +69,11 @@ class SweptMove {
   const Vec3& start() const { return curve_.tipStart(); }  // tip at t = 0
   const Vec3& end() const { return curve_.tipEnd(); }      // tip at t = 1
   bool turning() const { return !segment_; }
+  // The spacing (mm) of the knots a turning move starts its contact search from
+  // (contact_knots.h; default kContactKnotSpacing). Heights differ only within the proof
+  // gap from one spacing to another, but are a function of (move, spacing, x, y).
+  void setContactKnotSpacing(double mm);
+  double contactKnotSpacing() const { return knotSpacing_; }
   // The constant-axis kernel, or null for a turning move.
   const SweptSegment* segment() const { return segment_.get(); }
 
@@ -92,6 +97,7 @@ class SweptMove {
   double zTop_ = 0;       // turning: an upper bound of the solid's highest z, mm
   double tipSpeed_ = 0;   // turning: >= |d tip / dt| over the move, mm per unit t
   uint64_t knotsId_ = 0;  // turning: its rim-contact knots' identity (contact_knots.h)
+  double knotSpacing_;    // mm, the knots' lattice spacing
 };
 
 }  // namespace scallop
