@@ -21,8 +21,8 @@ SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const Simulation
                             ? options.cast.regionCells
                             : std::clamp<int64_t>(int64_t(0.064 / spacing + 1e-9), 8, 32);
   sceneOptions.regionHalfSize = 0.5 * double(cells - 1) * spacing;
-  // Knots about 8 cells apart: on B3 at 20 um cells, the fixed 16 um knots cost twice
-  // what they saved (every cell located its own four).
+  // Knots about 8 cells apart, none for coarse cells (contact_knots.h): on B3 at 20 um
+  // cells, fixed 16 um knots cost twice what they saved (every cell located its own four).
   sceneOptions.contactKnotSpacing = contactKnotSpacingFor(spacing);
   return sceneOptions;
 }

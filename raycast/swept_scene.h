@@ -25,9 +25,9 @@ struct SceneOptions {
   // Largest half side of a square region that gatherCandidates() will be asked about,
   // mm. Tile boxes grow by this much in x and y.
   double regionHalfSize = 0;
-  // The knot spacing (mm) given to every turning move (SweptMove::setContactKnotSpacing);
-  // <= 0 leaves the moves' own.
-  double contactKnotSpacing = 0;
+  // The knot spacing (mm) given to every turning move (SweptMove::setContactKnotSpacing;
+  // 0: none); negative leaves the moves' own.
+  double contactKnotSpacing = -1;
 };
 
 // The side (mm) of the culling tiles of a segment whose xy box has the given area

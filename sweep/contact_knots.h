@@ -20,7 +20,9 @@ namespace scallop {
 // the cells they serve save.
 constexpr double kContactKnotSpacing = 1.0 / 64;
 
-// The power of two nearest to 8 cells of `cellSpacing` mm, within [1/1024, 1/4] mm.
+// The power of two nearest to 8 cells of `cellSpacing` mm, at least 1/1024 mm, where that
+// is at most 1/32 mm (cells up to ~5.6 um); 0 (no knots: starts from the middle) for
+// coarser cells.
 double contactKnotSpacingFor(double cellSpacing);
 
 // A new identity for a move's knots in the caches (never 0): one for each move and
@@ -28,8 +30,8 @@ double contactKnotSpacingFor(double cellSpacing);
 uint64_t newContactKnotsId();
 
 // The start for the line through (x, y): the contacts of the knots of spacing `spacing`
-// interpolated where all four knots have one, else the default start (the middle of the
-// move). `id` names the move and the spacing.
+// interpolated where all four knots have one, else (or with spacing 0) the default start
+// (the middle of the move). `id` names the move and the spacing.
 RimStart contactStart(uint64_t id, double spacing, const Cutter& cutter, const PoseCurve& curve,
                       double x, double y);
 

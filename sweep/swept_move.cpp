@@ -181,7 +181,7 @@ SweptMove::SweptMove(const SweptSegment& segment)
       knotSpacing_(kContactKnotSpacing) {}
 
 void SweptMove::setContactKnotSpacing(double mm) {
-  if (!(mm > 0) || mm == knotSpacing_) return;
+  if (!(mm >= 0) || mm == knotSpacing_) return;
   knotSpacing_ = mm;
   // The cached knots of the old spacing are another move's now.
   if (!segment_) knotsId_ = newContactKnotsId();

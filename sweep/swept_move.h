@@ -70,8 +70,9 @@ class SweptMove {
   const Vec3& end() const { return curve_.tipEnd(); }      // tip at t = 1
   bool turning() const { return !segment_; }
   // The spacing (mm) of the knots a turning move starts its contact search from
-  // (contact_knots.h; default kContactKnotSpacing). Heights differ only within the proof
-  // gap from one spacing to another, but are a function of (move, spacing, x, y).
+  // (contact_knots.h; default kContactKnotSpacing; 0: none, start from the middle).
+  // Heights differ only within the proof gap from one spacing to another, but are a
+  // function of (move, spacing, x, y).
   void setContactKnotSpacing(double mm);
   double contactKnotSpacing() const { return knotSpacing_; }
   // The constant-axis kernel, or null for a turning move.

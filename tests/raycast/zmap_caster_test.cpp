@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "raycast/simulation.h"
+#include "sweep/contact_knots.h"
 #include "sweep/raster.h"
 #include "sweep/tool_path_sweep.h"
 
@@ -124,8 +125,11 @@ TEST(ZMapCaster, EveryCellIsTheMinimumOverAllSegments) {
   // the stock top and every swept segment's exact lowest point.
   for (const Fixture& f : {freeformFixture(), turningFixture()}) {
     const ZMap map = cast(f, 0.05, 16, 2);
-    const std::vector<SweptMove> segs = sweepToolPath(f.cutter, f.path);
+    std::vector<SweptMove> segs = sweepToolPath(f.cutter, f.path);
     const GridSpec& g = map.grid();
+    // The scene gives turning moves the knot spacing of its grid (contact_knots.h): a
+    // height is a function of the move, its spacing and the line.
+    for (SweptMove& s : segs) s.setContactKnotSpacing(contactKnotSpacingFor(g.spacing));
     for (int64_t j = 0; j < g.ny; j += 3) {
       for (int64_t i = 0; i < g.nx; i += 3) {
         double want = f.stock.max.z;
