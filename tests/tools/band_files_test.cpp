@@ -5,6 +5,7 @@
 // completes the map with the same bits.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -150,6 +151,70 @@ TEST_F(BandFiles, RerunningOnlyTheFailedBandCompletesTheSameMap) {
     EXPECT_EQ(slurp(path("o") + "/" + f), slurp(path("whole") + "/" + f)) << f;
   for (int k = 0; k < 5; ++k)
     EXPECT_EQ(slurp(band("o", k, ".raw")), slurp(band("whole", k, ".raw")));
+}
+
+// What a task killed while it wrote band K leaves (tools/io/atomic_file.h's names).
+std::string leftover(const std::string& dir, const std::string& name) {
+  const std::string p = dir + "/" + name;
+  std::ofstream(p, std::ios::binary) << std::string(1000, '\x7f');
+  return p;
+}
+
+TEST_F(BandFiles, NextRunOfABandRemovesWhatAKilledRunOfItLeft) {
+  computeAll("whole");
+  ASSERT_EQ(run("merge " + path("whole")).status, 0);
+  fs::create_directories(path("o"));
+  const std::string raw2 = leftover(path("o"), ".band-2.raw.tmp-4321-0");
+  const std::string json4 = leftover(path("o"), ".band-4.json.tmp-4321-1");
+  // Not a band temporary (another output's, or only alike): never touched.
+  const std::string exr = leftover(path("o"), ".heights.exr.tmp-4321-2");
+  const std::string alike = leftover(path("o"), ".band-02.raw.tmp-4321-3");
+  const CliRun first = bands("o", "0:3");
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_FALSE(fs::exists(raw2));
+  EXPECT_NE(first.err.find(".band-2.raw.tmp-4321-0"), std::string::npos) << first.err;
+  // Band 4 is not this run's: its temporary may be another task's, still writing.
+  EXPECT_TRUE(fs::exists(json4));
+  ASSERT_EQ(bands("o", "3:5").status, 0);
+  EXPECT_FALSE(fs::exists(json4));
+  EXPECT_TRUE(fs::exists(exr));
+  EXPECT_TRUE(fs::exists(alike));
+  const CliRun m = run("merge " + path("o"));
+  ASSERT_EQ(m.status, 0) << m.err;
+  for (const char* f : {"heights.gsf", "preview.png"})
+    EXPECT_EQ(slurp(path("o") + "/" + f), slurp(path("whole") + "/" + f)) << f;
+}
+
+TEST_F(BandFiles, MergeRemovesTemporariesNoNewerThanTheirBand) {
+  computeAll("whole");
+  ASSERT_EQ(run("merge " + path("whole")).status, 0);
+  computeAll("o");
+  const auto completed = [&](int k) { return fs::last_write_time(band("o", k, ".json")); };
+  const std::string stale = leftover(path("o"), ".band-1.raw.tmp-4321-0");
+  fs::last_write_time(stale, completed(1) - std::chrono::hours(1));
+  const std::string sameTime = leftover(path("o"), ".band-3.json.tmp-4321-1");
+  fs::last_write_time(sameTime, completed(3));
+  // Written after band 2 was complete: a rerun of band 2 may be writing it now.
+  const std::string live = leftover(path("o"), ".band-2.raw.tmp-4321-2");
+  fs::last_write_time(live, completed(2) + std::chrono::hours(1));
+  // Of a band this run does not have: no description to compare with.
+  const std::string beyond = leftover(path("o"), ".band-7.raw.tmp-4321-3");
+  fs::last_write_time(beyond, completed(0) - std::chrono::hours(1));
+  const CliRun m = run("merge " + path("o"));
+  ASSERT_EQ(m.status, 0) << m.err;
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_FALSE(fs::exists(sameTime));
+  EXPECT_NE(m.err.find(".band-1.raw.tmp-4321-0"), std::string::npos) << m.err;
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(beyond));
+  for (const char* f : {"heights.gsf", "preview.png"})
+    EXPECT_EQ(slurp(path("o") + "/" + f), slurp(path("whole") + "/" + f)) << f;
+  // A merge that refuses the folder removes nothing.
+  const std::string kept = leftover(path("o"), ".band-0.raw.tmp-4321-4");
+  fs::last_write_time(kept, completed(0) - std::chrono::hours(1));
+  fs::remove(band("o", 4, ".json"));
+  EXPECT_EQ(run("merge " + path("o")).status, 1);
+  EXPECT_TRUE(fs::exists(kept));
 }
 
 TEST_F(BandFiles, PrintBandsGivesTheLayoutAndComputesNothing) {

@@ -78,6 +78,12 @@ int runMerge(const MergeArgs& args) {
     descriptions[b] = std::move(doc);
   }
 
+  // Every band is there: what killed writers of these bands left only takes disk space
+  // (band_files.h: removeStaleBandTemporaries spares what may be a live rerun's).
+  for (const std::string& leftover : removeStaleBandTemporaries(args.dir, bands))
+    std::fprintf(stderr, "scallop: removed %s, left by a run of its band that was killed\n",
+                 leftover.c_str());
+
   // One pass: each band is read, its MD5 verified, and streamed into the outputs, which
   // appear only when all are complete.
   const GridSpec grid = gridFromJson(run.at("grid"));
@@ -115,7 +121,8 @@ Command addMergeCommand(CLI::App& parent, CommonOptions&) {
       "as one `simulate --tiled` run would write them. Every band is checked first: a\n"
       "missing, partial (size) or corrupt (MD5) band, or one of another job, grid or\n"
       "--tile-rows (fingerprint), fails (exit 1) naming it and the command that computes it\n"
-      "again; nothing is written then. The band files are left in place.");
+      "again; nothing is written then. The band files are left in place; hidden temporaries\n"
+      "(.band-K.raw.tmp-*) that killed runs of these bands left are removed.");
   app->add_option("DIR", args->dir, "Folder holding the band files")->required();
   app->add_flag("--json", args->json, "Print report.json on stdout (and nothing else there)");
   return {app, [args]() { return runMerge(*args); }};

@@ -28,11 +28,22 @@ std::string osReason(int err) {
 // threads) from sharing a temporary name.
 std::atomic<unsigned> tempCounter{0};
 
+// The temporary name's parts around PID and N; isTemporaryNameOf reads them back.
+constexpr const char* kTempInfix = ".tmp-";
+
 std::string tempNameFor(const std::string& path) {
   const fs::path p(path);
-  const std::string name = "." + p.filename().string() + ".tmp-" + std::to_string(::getpid()) +
+  const std::string name = "." + p.filename().string() + kTempInfix + std::to_string(::getpid()) +
                            "-" + std::to_string(tempCounter.fetch_add(1));
   return (p.parent_path() / name).string();
+}
+
+// True when `text` from `pos` is one or more decimal digits ending at `end`.
+bool digitsBetween(const std::string& text, size_t pos, size_t end) {
+  if (pos >= end) return false;
+  for (size_t i = pos; i < end; ++i)
+    if (text[i] < '0' || text[i] > '9') return false;
+  return true;
 }
 
 // Writes the file's data to stable storage so that a crash just after the rename
@@ -110,6 +121,14 @@ void writeStreamAtomically(const std::string& path, const std::string& what,
 void writeTextAtomically(const std::string& path, const std::string& text,
                          const std::string& what) {
   writeStreamAtomically(path, what, [&](std::ostream& out) { out << text; });
+}
+
+bool isTemporaryNameOf(const std::string& name, const std::string& finalName) {
+  const std::string prefix = "." + finalName + kTempInfix;
+  if (finalName.empty() || name.compare(0, prefix.size(), prefix) != 0) return false;
+  const size_t dash = name.find('-', prefix.size());
+  return dash != std::string::npos && digitsBetween(name, prefix.size(), dash) &&
+         digitsBetween(name, dash + 1, name.size());
 }
 
 void ensureWritableDirectory(const std::string& dir) {

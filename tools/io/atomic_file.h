@@ -65,6 +65,12 @@ void writeStreamAtomically(const std::string& path, const std::string& what,
 // Writes `text` as the whole content of `path`, atomically.
 void writeTextAtomically(const std::string& path, const std::string& text, const std::string& what);
 
+// True when `name` (a file name without folder) has the form of a temporary that
+// AtomicFile creates for the file named `finalName`: ".FINALNAME.tmp-PID-N". Used to
+// find what a killed process left (band_files.h); says nothing about whether its
+// writer is still alive.
+bool isTemporaryNameOf(const std::string& name, const std::string& finalName);
+
 // Creates `dir` (and missing parents) if needed and checks that files can be created
 // in it by creating and removing a probe file. Throws InputError(dir, reason) when it
 // cannot be created, is not a folder, or is not writable.

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <system_error>
 
 #include "sweep/input_error.h"
@@ -24,6 +25,36 @@ std::string heightsMd5(const ZMap& map) {
   Md5 md5;
   md5.update(map.heights().data(), map.heights().size() * sizeof(double));
   return md5.hexDigest();
+}
+
+struct BandTemporary {
+  std::string path;
+  int64_t band = 0;
+};
+
+// The hidden temporaries of band files in `dir` (none if it cannot be read).
+std::vector<BandTemporary> findBandTemporaries(const std::string& dir) {
+  std::vector<BandTemporary> found;
+  const std::regex candidate(R"(\.band-(\d{1,15})\.(raw|json)\.tmp-.*)");
+  std::error_code error;
+  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    std::smatch m;
+    if (!std::regex_match(name, m, candidate)) continue;
+    const int64_t band = std::stoll(m[1].str());
+    // The exact name AtomicFile gives band K's file (this also rejects "band-02").
+    const std::string file =
+        fs::path(m[2] == "raw" ? bandRawPath(dir, band) : bandDescriptionPath(dir, band))
+            .filename()
+            .string();
+    if (isTemporaryNameOf(name, file)) found.push_back({it->path().string(), band});
+  }
+  return found;
+}
+
+bool removeFile(const std::string& path) {
+  std::error_code error;
+  return fs::remove(path, error) && !error;
 }
 
 }  // namespace
@@ -62,6 +93,28 @@ void writeBandFiles(const std::string& dir, int64_t band, const ZMap& map, const
        {{"file", fs::path(raw).filename().string()}, {"bytes", bytes}, {"md5", heightsMd5(map)}}},
       {"stats", stats}};
   writeTextAtomically(side, doc.dump(1) + "\n", "the band description");
+}
+
+std::vector<std::string> removeBandTemporaries(const std::string& dir, int64_t first, int64_t end) {
+  std::vector<std::string> removed;
+  for (const BandTemporary& t : findBandTemporaries(dir))
+    if (t.band >= first && t.band < end && removeFile(t.path)) removed.push_back(t.path);
+  return removed;
+}
+
+std::vector<std::string> removeStaleBandTemporaries(const std::string& dir, int64_t bands) {
+  std::vector<std::string> removed;
+  for (const BandTemporary& t : findBandTemporaries(dir)) {
+    if (t.band >= bands) continue;
+    std::error_code tempError, bandError;
+    const fs::file_time_type written = fs::last_write_time(t.path, tempError);
+    const fs::file_time_type complete =
+        fs::last_write_time(bandDescriptionPath(dir, t.band), bandError);
+    // "No later than" rather than "before": file systems with whole-second times.
+    if (tempError || bandError || written > complete) continue;
+    if (removeFile(t.path)) removed.push_back(t.path);
+  }
+  return removed;
 }
 
 json readBandDescription(const std::string& path, int64_t band) {

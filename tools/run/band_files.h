@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "raycast/zmap.h"
 
@@ -33,6 +34,26 @@ std::string bandDescriptionPath(const std::string& dir, int64_t band);
 // (0: the default), kept so that merge can say how to compute a missing band again.
 void writeBandFiles(const std::string& dir, int64_t band, const ZMap& map,
                     const nlohmann::json& run, int64_t tileRows, const nlohmann::json& stats);
+
+// Leftovers of killed band writers. band-K.raw and band-K.json are written under hidden
+// temporary names (".band-K.raw.tmp-PID-N", atomic_file.h) and renamed when whole; a
+// task killed meanwhile (Slurm's time limit or scancel after its grace period, a node
+// failure: SIGKILL leaves no chance to clean up) leaves its temporary behind, as large
+// as the band. It never counts as a band, but it takes disk space on the shared folder,
+// so the next writer of that band and the merge remove it:
+//
+// removeBandTemporaries: every temporary of bands [first, end), at the start of
+// `simulate --bands first:end`. That run is the writer of those bands: it replaces
+// band-K.raw and band-K.json whatever is there, so another process writing the same
+// band at the same time would already spoil the band (merge's MD5 check says so).
+std::vector<std::string> removeBandTemporaries(const std::string& dir, int64_t first, int64_t end);
+
+// removeStaleBandTemporaries: in merge, once bands 0..bands-1 are all there, the
+// temporaries of those bands last written no later than the band's band-K.json. A
+// writer removes band-K.json before it creates its temporaries and writes it again only
+// after renaming them, so such a temporary's writer stopped before that band-K.json was
+// written: it was killed. A newer one may be a live rerun of the band and is left alone.
+std::vector<std::string> removeStaleBandTemporaries(const std::string& dir, int64_t bands);
 
 // Reads and checks band-K.json (format and band index); throws InputError naming it.
 nlohmann::json readBandDescription(const std::string& path, int64_t band);

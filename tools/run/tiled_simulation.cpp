@@ -123,6 +123,14 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
                  (long long)first, (long long)end - 1, (long long)layout.bands,
                  (long long)layout.bandRows);
 
+  // Before the computation: a leftover as large as a band could keep this run's own
+  // band from fitting on the disk (band_files.h says why removing them is safe).
+  if (partial)
+    for (const std::string& leftover : removeBandTemporaries(settings.outDir, first, end))
+      if (!settings.quiet)
+        std::fprintf(stderr, "scallop: removed %s, left by a run of its band that was killed\n",
+                     leftover.c_str());
+
   SimulationOptions options;
   options.cutting = job.cutting;
   const std::unique_ptr<SweptScene> scene =
