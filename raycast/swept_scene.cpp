@@ -111,6 +111,14 @@ bool planeFrom(const SweptMove& seg, const LowestPoint& lp, double x, double y, 
   return true;
 }
 
+// The cutoff to evaluate a guessed winner with (a neighbour's). A turning move's search
+// first tries to prove the move stays above its cutoff (ray clearance, swept_move.cpp
+// step 4a), which a winner always fails: a guess, right 95 % of the time on B3, skips
+// it. Heights do not depend on the cutoff, only whether a loser costs more.
+double hintCutoff(const SweptMove& seg, double best) {
+  return seg.turning() && !seg.teeth() ? HUGE_VAL : best;
+}
+
 // Plane values are exact up to double round-off; this margin (mm) absorbs it. (Steep
 // planes have coefficients up to 1e3; their round-off stays below 1e-11 mm here.)
 double planeSlack(double v) {
@@ -375,7 +383,8 @@ double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& ev
   if (guess < impl_->segments.size()) {
     SectionMemo* memo = cache ? cache->memoFor(guess, y) : nullptr;
     ++cell.evaluations;
-    const LowestPoint lp = impl_->segments[guess].lowestPoint(x, y, memo, ceiling);
+    const LowestPoint lp =
+        impl_->segments[guess].lowestPoint(x, y, memo, hintCutoff(impl_->segments[guess], ceiling));
     if (lp.hit && lp.z < ceiling) cell.best = lp.z, cell.winner = guess;
   }
   RTCRayHit rh = upwardRay(x, y, impl_->originZ, cell.best);
@@ -454,11 +463,11 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
   order.clear();
   double best = ceiling;
   uint32_t winner = UINT32_MAX;
-  auto evaluate = [&](uint32_t k) {
+  auto evaluate = [&](uint32_t k, double cutoff) {
     const uint32_t segment = candidates[k].segment;
     ++evaluations;
     SectionMemo* memo = cache ? cache->memoFor(segment, y) : nullptr;
-    const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, best);
+    const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, cutoff);
     if (lp.hit && lp.z < best) best = lp.z, winner = k;
   };
   // The candidate's own plane (from the region's centre) is usually the tightest and
@@ -470,7 +479,8 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
     return bound - planeSlack(bound);
   };
   const uint32_t first = hint && *hint < candidates.size() ? *hint : UINT32_MAX;
-  if (first != UINT32_MAX && safeBound(candidates[first]) < best) evaluate(first);
+  if (first != UINT32_MAX && safeBound(candidates[first]) < best)
+    evaluate(first, hintCutoff(impl_->segments[candidates[first].segment], best));
   for (const BlockEntry& entry : block) {
     if (entry.bound >= best) break;
     const uint32_t k = entry.candidate;
@@ -481,7 +491,7 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
   std::sort(order.begin(), order.end());
   for (const auto& [bound, k] : order) {
     if (bound >= best) break;
-    evaluate(k);
+    evaluate(k, best);
   }
   if (hint) *hint = winner;
   return best;

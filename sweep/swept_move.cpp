@@ -482,8 +482,18 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) con
     if (out.normal.z == 0) out.normal = {0, 0, -1};
     return out;
   };
+  // Step 4b, and where it fails the Taylor form of step 2d from the best sample over the
+  // whole move: on a flat face (the bottom of a bull or flat cutter) g curves away from
+  // the line only through f'', which tangent lines cannot see, while 2d proves it at once.
   auto cleared = [&] {
-    return U < HUGE_VAL && rayClearsMove(c, curve_, {x, y, U - kProofGap}, samples[best].t, 0, 1);
+    if (!(U < HUGE_VAL)) return false;
+    if (rayClearsMove(c, curve_, {x, y, U - kProofGap}, samples[best].t, 0, 1)) return true;
+    if (!smooth(samples[best])) return false;
+    supportOf(best);
+    Sample whole[2];
+    whole[0].t = 0, whole[0].tip = curve_.tip(0);
+    whole[1].t = 1, whole[1].tip = curve_.tip(1);
+    return taylorProves(samples[best], whole[0], whole[1], U - kProofGap);
   };
 
   // Step 5: the minimum of f located without any bound, then the whole move proven at
