@@ -418,7 +418,11 @@ void SweptScene::gatherCandidates(double x0, double y0, double x1, double y1, do
   for (uint32_t id : tiles) {
     const uint32_t segment = impl_->tiles[id].segment;
     if (candidates.empty() || candidates.back().segment != segment)
-      candidates.push_back(Candidate{id, segment});
+      candidates.push_back(Candidate{id, segment, -HUGE_VAL, 0, 0, {}});
+  }
+  for (Candidate& cand : candidates) {
+    const SweptMove& seg = impl_->segments[cand.segment];
+    if (seg.turning()) cand.tip = tipPlaneBound(seg.curve(), x0, y0, x1, y1);
   }
 }
 
@@ -440,8 +444,9 @@ void SweptScene::orderForBlock(const std::vector<Candidate>& candidates, double 
   order.clear();
   for (uint32_t k = 0; k < candidates.size(); ++k) {
     const Candidate& cand = candidates[k];
-    const double bound = std::max(planeMinOver({cand.a, cand.b, cand.c}, x0, y0, x1, y1),
-                                  planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1));
+    const double bound = std::max({planeMinOver({cand.a, cand.b, cand.c}, x0, y0, x1, y1),
+                                   planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1),
+                                   cand.tip.minOver(x0, y0, x1, y1)});
     order.push_back({bound - planeSlack(bound), k});
   }
   std::sort(order.begin(), order.end(), [](const BlockEntry& p, const BlockEntry& q) {
@@ -471,11 +476,14 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
     if (lp.hit && lp.z < best) best = lp.z, winner = k;
   };
   // The candidate's own plane (from the region's centre) is usually the tightest and
-  // alone often prunes it; the tile's planes are consulted only when it does not.
+  // alone often prunes it; the tile's planes are consulted only when it does not, and a
+  // turning move's tip-plane bound (tip_plane_bound.h) only when neither does: it
+  // follows a bottom face as it turns, which world-fixed planes cannot.
   auto safeBound = [&](const Candidate& cand) {
     double bound = cand.a + cand.b * x + cand.c * y;
     if (bound - planeSlack(bound) < best)
       bound = std::max(bound, planeBoundAt(impl_->tiles[cand.tile], x, y));
+    if (bound - planeSlack(bound) < best) bound = std::max(bound, cand.tip.at(x, y));
     return bound - planeSlack(bound);
   };
   const uint32_t first = hint && *hint < candidates.size() ? *hint : UINT32_MAX;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sweep/swept_move.h"
+#include "sweep/tip_plane_bound.h"
 
 namespace scallop {
 
@@ -71,11 +72,13 @@ class SweptScene {
 
   // --- Region queries: one Embree ray for a whole square of cells ---------------------
   // A segment that may be lowest somewhere in a region, with one extra lower-bound plane
-  // z >= a + b x + c y of its own (none until tightenCandidates).
+  // z >= a + b x + c y of its own (none until tightenCandidates) and, for a turning
+  // move, its tip-plane bound over the region (tip_plane_bound.h).
   struct Candidate {
     uint32_t tile;
     uint32_t segment;
     double a = -HUGE_VAL, b = 0, c = 0;
+    TipPlaneBound tip;
   };
   // Every segment that can be lower than `ceiling` somewhere in [x0, x1] x [y0, y1]
   // (one candidate per segment, in segment order). The region's half side must not
