@@ -59,11 +59,15 @@
 //      convex in t, so a ladder of tangent lines proves the downward ray from Q misses
 //      every K(t) in a few closed-form distances, without any stationary search.
 //   4a. Before anything is sampled, with z = the cutoff: a move that provably stays
-//      above it is a miss (on B3, 45 % of the moves a cell asks about).
+//      above it is a miss (on B3, 45 % of the moves a cell asks about). The scene asks
+//      a guessed winner (a neighbour's) without a cutoff, since a winner always fails it.
 //   4b. Once the best sample's slope is small (|f'| <= 1e-6) or nothing brackets a
 //      minimum, with z = U - 1e-9 and the best sample as the anchor: the whole move is
 //      proven at once, in place of step 3's ladder of intervals (B3: 99.99 % of the
-//      searches that reach it). Where it fails, step 3 goes on as before.
+//      searches that reach it). After step 5's located minimum, where it fails, the
+//      Taylor form 2d from the best sample over the whole of [0, 1]: on a flat bottom
+//      face g curves away from the line only through f'' (the turn), which tangent lines
+//      cannot see. Where both fail, step 3 goes on as before.
 //   6. The rim contact: where the cutter meets l on its corner, the lowest point is the
 //      minimum over (t, phi) of the balls round C's rim, located by Newton's method
 //      (rim_contact.cpp) from the contact interpolated at fixed knots (contact_knots.cpp)
