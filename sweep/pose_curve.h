@@ -95,7 +95,7 @@ class PoseCurve {
   // For slerp e1 is the fixed turning axis itself (no trigonometry beyond axis(t)).
   PoseFrame frame(double t) const;
   // A direction fixed to the cutter, carried from its pose at ta to its pose at tb:
-  // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: swept_move.cpp.)
+  // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: certified_search.cpp.)
   Vec3 carry(const Vec3& v, double ta, double tb) const;
 
   const Vec3& tipStart() const { return tip0_; }

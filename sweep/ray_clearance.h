@@ -31,7 +31,7 @@ bool rayClearsMove(const Cutter& cutter, const PoseCurve& curve, const Vec3& q,
 
 // d^2 f / dt^2 at t for the lowest point f(t) of K(t) on the vertical line through p,
 // p being that lowest point (on K(t)'s boundary): the Newton step of the search's
-// first probe (swept_move.cpp step 5). A heuristic that only chooses where to sample,
+// first probe (certified_search.cpp step 5). A heuristic that only chooses where to sample,
 // not a bound; NaN where p lies above the flute top or on K's upper side.
 double lowestPointCurvature(const Cutter& cutter, const PoseCurve& curve, double t, const Vec3& p);
 

@@ -3,7 +3,7 @@
 // the cutter's rim: one small smooth problem instead of a search over t of stationary
 // lowest points. It only locates: the height it returns is a real point of the swept
 // solid, and the caller proves it is the lowest to 1e-9 mm (ray_clearance.h) or falls
-// back to the certified search (swept_move.cpp). Derivation in rim_contact.cpp.
+// back to the certified search (certified_search.h). Derivation in rim_contact.cpp.
 #pragma once
 
 #include "sweep/cutter.h"

@@ -3,8 +3,8 @@
 //
 // A move whose axis is constant is a SweptSegment (the convex Minkowski sweep,
 // swept_segment.cpp); a move whose axis turns (CL data with a new axis at every point,
-// a 5-axis machine's rotary motion) is solved by the certified search over t of
-// swept_move.cpp. Either way the height is the lowest point of the true swept solid,
+// a 5-axis machine's rotary motion) by the rim contact and ray clearance of
+// swept_move.cpp, or the certified search over t (certified_search.h). Either way the height is the lowest point of the true swept solid,
 // with a proven lower bound within 1e-9 mm of the height returned.
 //
 // Memory: sizeof(SweptMove) bytes per move (440), plus, for a constant-axis
