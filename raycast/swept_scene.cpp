@@ -417,8 +417,10 @@ void SweptScene::gatherCandidates(double x0, double y0, double x1, double y1, do
   });
   for (uint32_t id : tiles) {
     const uint32_t segment = impl_->tiles[id].segment;
-    if (candidates.empty() || candidates.back().segment != segment)
-      candidates.push_back(Candidate{id, segment, -HUGE_VAL, 0, 0, {}});
+    if (candidates.empty() || candidates.back().segment != segment) {
+      candidates.emplace_back();
+      candidates.back().tile = id, candidates.back().segment = segment;
+    }
   }
   for (Candidate& cand : candidates) {
     const SweptMove& seg = impl_->segments[cand.segment];

@@ -104,13 +104,6 @@ struct TipBounds {
   double rateAlong(const Vec3& N) const { return linear ? std::fabs(dot(N, delta)) : speed; }
 };
 
-// |tip'(t)| <= |tip'(end)| + A |t - end| for the nearer end: at most the larger end speed
-// plus A / 2 (exactly |p1 - p0| for a linear tip).
-double tipSpeedBound(const PoseCurve& curve) {
-  if (curve.linearTip()) return length(curve.tipEnd() - curve.tipStart());
-  return std::max(length(curve.tipVelocity(0)), length(curve.tipVelocity(1))) +
-         0.5 * curve.tipAccelBound();
-}
 TipBounds tipBoundsOf(const PoseCurve& curve, double speed) {
   return {curve.tipEnd() - curve.tipStart(), curve.linearTip(), speed, curve.tipAccelBound(),
           curve.tipJerkBound()};
@@ -159,17 +152,13 @@ double supportOver(const Cutter& c, double omega, double reach, const TipBounds&
 
 }  // namespace
 
-double turningTipSpeedBound(const PoseCurve& curve) {
-  return tipSpeedBound(curve);
-}
-
 double turningSupport(const Cutter& cutter, const PoseCurve& curve, const TurningBounds& bounds,
                       const Vec3& N) {
   Sample a, b;
   a.t = 0, a.tip = curve.tip(0), a.axis = curve.axis(0);
   b.t = 1, b.tip = curve.tip(1), b.axis = curve.axis(1);
-  return supportOver(cutter, curve.turnRate(), bounds.reach, tipBoundsOf(curve, bounds.tipSpeed),
-                     a, dot(N, cutterSupport(cutter, a.axis, N)), b,
+  return supportOver(cutter, curve.turnRate(), bounds.reach, tipBoundsOf(curve, bounds.tipSpeed), a,
+                     dot(N, cutterSupport(cutter, a.axis, N)), b,
                      dot(N, cutterSupport(cutter, b.axis, N)), N);
 }
 
@@ -227,9 +216,9 @@ LowestPoint certifiedLowestPoint(const Cutter& c, const PoseCurve& curve,
     if (N.z == 0) return -HUGE_VAL;
     const Sample& other = &from == &a ? b : a;
     const double hOther = dot(N, cutterSupport(c, other.axis, N));
-    const double H = &from == &a
-                         ? supportOver(c, omega, bounds.reach, tipMotion, a, from.hOwn, b, hOther, N)
-                         : supportOver(c, omega, bounds.reach, tipMotion, a, hOther, b, from.hOwn, N);
+    const double H =
+        &from == &a ? supportOver(c, omega, bounds.reach, tipMotion, a, from.hOwn, b, hOther, N)
+                    : supportOver(c, omega, bounds.reach, tipMotion, a, hOther, b, from.hOwn, N);
     const double nq = N.x * x + N.y * y;
     const double z = (H - nq) / N.z;
     return z - 1e-12 * (1 + std::fabs(H) + std::fabs(nq)) / -N.z;

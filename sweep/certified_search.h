@@ -19,11 +19,8 @@ constexpr double kProofGap = 1e-9;
 struct TurningBounds {
   double reach = 0;     // farthest cutter point from the tip, hypot(L, R), mm
   double zTop = 0;      // an upper bound of the swept solid's highest z, mm
-  double tipSpeed = 0;  // >= |d tip / dt| over the move, mm per unit t
+  double tipSpeed = 0;  // PoseCurve::tipSpeedBound(), kept with the move
 };
-
-// |d tip / dt| <= this over [0, 1] (|p1 - p0| for a linear tip).
-double turningTipSpeedBound(const PoseCurve& curve);
 
 // >= max over t in [0, 1] of the support of K(t) in the unit direction N (the chord bound,
 // certified_search.cpp step 2a, over the whole move), before round-off.

@@ -166,6 +166,11 @@ Vec3 PoseCurve::tipVelocity(double t) const {
   return cross(Vec3{0, 0, 1}, rotZ(tq + e_, -spin)) * -dSpin_ + rotZ(inner, -spin);
 }
 
+double PoseCurve::tipSpeedBound() const {
+  if (linearTip()) return length(tip1_ - tip0_);
+  return std::max(length(tipVelocity(0)), length(tipVelocity(1))) + 0.5 * tipAccel_;
+}
+
 Vec3 PoseCurve::tipAcceleration(double t) const {
   if (linearTip()) return {};
   // With P = T(psi) q and W = P + e: P' = -dT n x P + T dq, P'' = -dT n x (P' + T dq);

@@ -82,6 +82,10 @@ class PoseCurve {
   // t^2, t^3): 0 for the kinds whose tip is linear.
   double tipAccelBound() const { return tipAccel_; }
   double tipJerkBound() const { return tipJerk_; }
+  // A proven bound over [0, 1] of |d tip / dt| (mm per unit t): |p1 - p0| for the kinds
+  // whose tip is linear; on a curve |tip'(t)| <= |tip'(end)| + A |t - end| for the
+  // nearer end, at most the larger end speed plus A / 2.
+  double tipSpeedBound() const;
   bool linearTip() const { return kind_ != Kind::JointBC && kind_ != Kind::JointAC; }
   Vec3 axis(double t) const;
   Pose pose(double t) const { return {tip(t), axis(t)}; }

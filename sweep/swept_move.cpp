@@ -50,7 +50,6 @@
 
 namespace scallop {
 
-
 SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
     : cutter_(cutter),
       curve_(curve),
@@ -60,7 +59,7 @@ SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
     segment_ = std::make_shared<const SweptSegment>(cutter, curve_.tipStart(), curve_.tipEnd(),
                                                     curve_.axis(0));
   else
-    tipSpeed_ = turningTipSpeedBound(curve_), zTop_ = support({0, 0, 1}), knotsId_ = newContactKnotsId();
+    tipSpeed_ = curve_.tipSpeedBound(), zTop_ = support({0, 0, 1}), knotsId_ = newContactKnotsId();
 }
 
 SweptMove::SweptMove(const SweptSegment& segment)
@@ -87,7 +86,6 @@ size_t SweptMove::bytesPerMove(bool turning, bool teeth) {
   return sizeof(SweptMove) + (turning ? 0 : sizeof(SweptSegment) + 32) +
          (teeth ? sizeof(ToothSweep) + 32 : 0);
 }
-
 
 double SweptMove::support(const Vec3& dir) const {
   if (segment_) return segment_->support(dir);

@@ -50,10 +50,7 @@ TipPlaneBound tipPlaneBound(const PoseCurve& curve, double x0, double y0, double
     a[i] = tip[i].z - b[i] * tip[i].x - c[i] * tip[i].y;
   }
   // D over the rectangle, from its corners.
-  const double S = curve.linearTip() ? length(tip[1] - tip[0])
-                                     : std::max(length(curve.tipVelocity(0)),
-                                                length(curve.tipVelocity(1))) +
-                                           0.5 * curve.tipAccelBound();
+  const double S = curve.tipSpeedBound();
   double D = 0;
   for (int i = 0; i < 2; ++i) {
     double horizontal = 0, vertical = 0;

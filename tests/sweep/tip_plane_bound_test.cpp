@@ -54,11 +54,10 @@ std::vector<Move> randomMoves(std::mt19937_64& rng) {
     const double b0 = 0.6 * u(rng), b1 = b0 + 0.3 * u(rng);
     const double c0 = 3 * u(rng), c1 = c0 + 1.0 * u(rng);
     const Vec3 p0{u(rng), u(rng), u(rng)}, p1{2 * u(rng), 2 * u(rng), u(rng)};
-    out.push_back({"rotary " + std::to_string(k), PoseCurve::rotary(kin, p0, p1, b0, b1, c0, c1),
-                   [=](double t) { return p0 + (p1 - p0) * t; },
-                   [=](double t) {
-                     return conventionAxis(kin, b0 + (b1 - b0) * t, c0 + (c1 - c0) * t);
-                   }});
+    out.push_back(
+        {"rotary " + std::to_string(k), PoseCurve::rotary(kin, p0, p1, b0, b1, c0, c1),
+         [=](double t) { return p0 + (p1 - p0) * t; },
+         [=](double t) { return conventionAxis(kin, b0 + (b1 - b0) * t, c0 + (c1 - c0) * t); }});
   }
   for (int k = 0; k < 4; ++k) {  // joint-linear, TCP off: the tip on a curve
     TableMachine m;
@@ -76,7 +75,7 @@ std::vector<Move> randomMoves(std::mt19937_64& rng) {
     out.push_back({"joint-linear " + std::to_string(k), PoseCurve::jointLinear(m, mo),
                    [=](double t) {
                      return trtForward(m, mo.joints0 + (mo.joints1 - mo.joints0) * t, tilt(t),
-                                            spin(t));
+                                       spin(t));
                    },
                    [=](double t) { return conventionAxis(m.kinematics, tilt(t), spin(t)); }});
   }
