@@ -474,7 +474,13 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
     const uint32_t segment = candidates[k].segment;
     ++evaluations;
     SectionMemo* memo = cache ? cache->memoFor(segment, y) : nullptr;
-    const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, cutoff);
+    double anchor = NAN;
+    if (winner != UINT32_MAX) {
+      const uint32_t w = candidates[winner].segment;
+      if (segment == w + 1) anchor = 0;
+      if (segment + 1 == w) anchor = 1;
+    }
+    const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, cutoff, anchor);
     if (lp.hit && lp.z < best) best = lp.z, winner = k;
   };
   // The candidate's own plane (from the region's centre) is usually the tightest and

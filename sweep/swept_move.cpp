@@ -117,21 +117,26 @@ LowestPoint SweptMove::planeHint(double x, double y) const {
 }
 
 LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo,
-                                           double cutoff) const {
+                                           double cutoff, double cutoffAnchor) const {
   if (segment_) return segment_->lowestPoint(x, y, memo, cutoff);
-  return turningLowestPoint(x, y, cutoff);
+  return turningLowestPoint(x, y, cutoff, cutoffAnchor);
 }
 
-LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
+LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double cutoff,
+                                   double cutoffAnchor) const {
   // With teeth the envelope's height is the proven lower bound the crossing search
   // starts from: a move whose envelope is at or above the cutoff has no crossing below.
-  const LowestPoint envelope = envelopeLowestPoint(x, y, memo, cutoff);
+  const LowestPoint envelope = envelopeLowestPoint(x, y, memo, cutoff, cutoffAnchor);
   if (!teeth_) return envelope;
   return teeth_->lowestCrossing(x, y, envelope, cutoff);
 }
 
-LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff) const {
+LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
+                                          double cutoffAnchor) const {
   const Cutter& c = cutter_;
+  if (cutoff < HUGE_VAL && cutoffAnchor >= 0 && cutoffAnchor <= 1 &&
+      rayClearsMove(c, curve_, {x, y, cutoff}, cutoffAnchor, 0, 1))
+    return {};
   // Where the rim contact is expected (contact_knots.h): the anchor of step 4a's proof
   // and the start of step 6's Newton.
   const RimStart start =

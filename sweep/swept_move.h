@@ -36,7 +36,7 @@ class SweptMove {
   const ToothSweep* teeth() const { return teeth_.get(); }
   // The lowest point of the envelope alone (the swept solid), teeth or not.
   LowestPoint envelopeLowestPoint(double x, double y, SectionMemo* memo = nullptr,
-                                  double cutoff = HUGE_VAL) const;
+                                  double cutoff = HUGE_VAL, double cutoffAnchor = NAN) const;
 
   // The lowest point of the swept solid on the vertical line through (x, y) (with teeth:
   // the lowest point an edge passes through, ToothSweep::lowestCrossing). `memo`
@@ -44,7 +44,7 @@ class SweptMove {
   // `cutoff` may be reported as a miss; the height returned otherwise does not depend
   // on `cutoff` or `memo`.
   LowestPoint lowestPoint(double x, double y, SectionMemo* memo = nullptr,
-                          double cutoff = HUGE_VAL) const;
+                          double cutoff = HUGE_VAL, double cutoffAnchor = NAN) const;
 
   // The lowest point of the cutter standing at pose(t) alone: a convex function of
   // (x, y) (K(t) is convex) at or above the swept solid's heights.
@@ -88,7 +88,7 @@ class SweptMove {
   static unsigned long long unprovenSearches();
 
  private:
-  LowestPoint turningLowestPoint(double x, double y, double cutoff) const;
+  LowestPoint turningLowestPoint(double x, double y, double cutoff, double cutoffAnchor) const;
 
   Cutter cutter_;
   PoseCurve curve_;
