@@ -45,6 +45,7 @@
 
 #include "sweep/certified_search.h"
 #include "sweep/contact_knots.h"
+#include "sweep/face_contact.h"
 #include "sweep/ray_clearance.h"
 #include "sweep/rim_contact.h"
 
@@ -168,6 +169,16 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
       if (!(rim.z < cutoff)) return {};
       LowestPoint out;
       out.hit = true, out.z = rim.z, out.normal = rim.normal, out.t = rim.t;
+      return out;
+    }
+  }
+  // Step 7: the bottom face (face_contact.h), located and proven in closed form.
+  if (c.bottomRadius() > 0) {
+    const FaceContact face = locateFaceContact(c, curve_, x, y);
+    if (face.found) {
+      if (!(face.z < cutoff)) return {};
+      LowestPoint out;
+      out.hit = true, out.z = face.z, out.normal = face.normal, out.t = face.t;
       return out;
     }
   }
