@@ -135,6 +135,8 @@ LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double
 LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
                                           double cutoffAnchor) const {
   const Cutter& c = cutter_;
+  // Step 4a from the caller's anchor (a same-pass neighbour of the best move so far: the
+  // pose they share), before anything is looked up.
   if (cutoff < HUGE_VAL && cutoffAnchor >= 0 && cutoffAnchor <= 1 &&
       rayClearsMove(c, curve_, {x, y, cutoff}, cutoffAnchor, 0, 1))
     return {};
@@ -142,6 +144,19 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
   // and the start of step 6's Newton.
   const RimStart start =
       c.cornerRadius > 0 ? contactStart(knotsId_, knotSpacing_, c, curve_, x, y) : RimStart{};
+  // Step 7: the bottom face (face_contact.h), located and proven in closed form. First
+  // where the knots round the line found no rim contact (B3: most face lines), else
+  // after the rim contact.
+  bool faceTried = false;
+  auto face = [&](LowestPoint& out) {
+    faceTried = true;
+    const FaceContact f = locateFaceContact(c, curve_, x, y);
+    if (!f.found) return false;
+    if (f.z < cutoff) out.hit = true, out.z = f.z, out.normal = f.normal, out.t = f.t;
+    return true;
+  };
+  LowestPoint out;
+  if (c.bottomRadius() > 0 && !start.hasDirection && face(out)) return out;
   // Step 4a: a move the ray-clearance proof puts above the cutoff is a miss, found
   // without a single stationary search (ray_clearance.h).
   if (cutoff < HUGE_VAL) {
@@ -159,7 +174,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
   // start (rim_contact.h), and its height proven lowest at once by step 4b's ray
   // clearance: on corner contacts (every bull and ball on CAM paths) no stationary
   // search at all. Where Newton stops or the proof fails (flat faces, flanks, a line
-  // leaving the cutter), the certified search (certified_search.h) decides, from scratch.
+  // leaving the cutter), the face or the certified search (certified_search.h) decides.
   if (c.cornerRadius > 0) {
     RimContact rim = locateRimContact(c, curve_, x, y, start);
     // A knots' start too far for Newton (coarse knots, a contact that jumps between
@@ -167,21 +182,11 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
     if (!rim.found && start.hasDirection) rim = locateRimContact(c, curve_, x, y);
     if (rim.found && rayClearsMove(c, curve_, {x, y, rim.z - kProofGap}, rim.pose, 0, 1)) {
       if (!(rim.z < cutoff)) return {};
-      LowestPoint out;
       out.hit = true, out.z = rim.z, out.normal = rim.normal, out.t = rim.t;
       return out;
     }
   }
-  // Step 7: the bottom face (face_contact.h), located and proven in closed form.
-  if (c.bottomRadius() > 0) {
-    const FaceContact face = locateFaceContact(c, curve_, x, y);
-    if (face.found) {
-      if (!(face.z < cutoff)) return {};
-      LowestPoint out;
-      out.hit = true, out.z = face.z, out.normal = face.normal, out.t = face.t;
-      return out;
-    }
-  }
+  if (c.bottomRadius() > 0 && !faceTried && face(out)) return out;
   return certifiedLowestPoint(c, curve_, {reach_, zTop_, tipSpeed_}, x, y, cutoff);
 }
 
