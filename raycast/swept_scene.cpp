@@ -474,6 +474,8 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
     const uint32_t segment = candidates[k].segment;
     ++evaluations;
     SectionMemo* memo = cache ? cache->memoFor(segment, y) : nullptr;
+    // A same-pass neighbour of the best move so far (the next or previous move of the
+    // path) proves it stays above the cutoff first from the pose the two share.
     double anchor = NAN;
     if (winner != UINT32_MAX) {
       const uint32_t w = candidates[winner].segment;

@@ -33,8 +33,13 @@
 //      minimum over (t, phi) of the balls round C's rim, located by Newton's method
 //      (rim_contact.cpp) from the contact interpolated at fixed knots (contact_knots.cpp)
 //      and proven by step 4b from its t: on CAM paths ~1.5 evaluations of a closed form
-//      and one proof, no stationary search. The order: 4a (anchored at the knots' t),
-//      6, then where 6 fails 5 and 3 from scratch.
+//      and one proof, no stationary search.
+//   7. The face contact: where the cutter meets l on its flat bottom face, Newton's
+//      method on the crossing of l with the tip plane over t, proven by the Taylor form
+//      of that plane over the whole move (face_contact.cpp): no stationary search.
+//   The order: 4a anchored where the caller says (a same-pass neighbour of the cell's
+//   best move: the pose they share), else at the knots' t; 7 first where the knots found
+//   no rim contact; 6; 7; then 5 and 3 from scratch.
 //   The search's order depends on (x, y) alone (the cutoff only stops it, step 4a only
 //   returns a miss, and the knots are a function of the move), so the height returned is
 //   the same whatever was evaluated before, on any thread.

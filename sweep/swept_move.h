@@ -3,7 +3,7 @@
 //
 // A move whose axis is constant is a SweptSegment (the convex Minkowski sweep,
 // swept_segment.cpp); a move whose axis turns (CL data with a new axis at every point,
-// a 5-axis machine's rotary motion) by the rim contact and ray clearance of
+// a 5-axis machine's rotary motion) by the rim and face contacts and ray clearance of
 // swept_move.cpp, or the certified search over t (certified_search.h). Either way the height is the lowest point of the true swept solid,
 // with a proven lower bound within 1e-9 mm of the height returned.
 //
@@ -42,7 +42,8 @@ class SweptMove {
   // the lowest point an edge passes through, ToothSweep::lowestCrossing). `memo`
   // serves constant-axis moves (SweptSegment::lowestPoint). A height at or above
   // `cutoff` may be reported as a miss; the height returned otherwise does not depend
-  // on `cutoff` or `memo`.
+  // on `cutoff`, `memo` or `cutoffAnchor`: the t in [0, 1] a turning move first tries
+  // to prove it stays above the cutoff from (swept_move.cpp step 4a; NaN: the knots').
   LowestPoint lowestPoint(double x, double y, SectionMemo* memo = nullptr,
                           double cutoff = HUGE_VAL, double cutoffAnchor = NAN) const;
 
