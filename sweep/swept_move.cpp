@@ -38,8 +38,8 @@
 //      method on the crossing of l with the tip plane over t, proven by the Taylor form
 //      of that plane over the whole move (face_contact.cpp): no stationary search.
 //   The order: 4a anchored where the caller says (a same-pass neighbour of the cell's
-//   best move: the pose they share), else at the knots' t; 7 first where the knots found
-//   no rim contact; 6; 7; then 5 and 3 from scratch.
+//   best move: the pose they share), else at t = 1/2 and then at the knots' t; 7 first
+//   where the knots found no rim contact; 6; 7; then 5 and 3 from scratch.
 //   The search's order depends on (x, y) alone (the cutoff only stops it, step 4a only
 //   returns a miss, and the knots are a function of the move), so the height returned is
 //   the same whatever was evaluated before, on any thread.
@@ -145,10 +145,14 @@ LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double
 LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
                                           double cutoffAnchor) const {
   const Cutter& c = cutter_;
-  // Step 4a from the caller's anchor (a same-pass neighbour of the best move so far: the
-  // pose they share), before anything is looked up.
+  // Step 4a before anything is looked up: from the caller's anchor (a same-pass
+  // neighbour of the best move so far: the pose they share), otherwise from the middle
+  // of the move (its axis is kept: no trigonometry; this settles most of the moves far
+  // from their contact, and without their knots).
   const bool anchored = cutoff < HUGE_VAL && cutoffAnchor >= 0 && cutoffAnchor <= 1;
-  if (anchored && rayClearsMove(c, curve_, {x, y, cutoff}, cutoffAnchor, 0, 1)) return {};
+  if (cutoff < HUGE_VAL &&
+      rayClearsMove(c, curve_, {x, y, cutoff}, anchored ? cutoffAnchor : 0.5, 0, 1))
+    return {};
   // Where the rim contact is expected (contact_knots.h): the anchor of step 4a's proof
   // and the start of step 6's Newton.
   const RimStart start =
