@@ -1,7 +1,10 @@
 #include "raycast/zmap.h"
 
+#include <sys/mman.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace scallop {
 
@@ -17,8 +20,20 @@ GridSpec gridCovering(double minX, double minY, double maxX, double maxY, double
   return g;
 }
 
-ZMap::ZMap(const GridSpec& grid, double initialHeight)
-    : grid_(grid), heights_(size_t(grid.cells()), initialHeight) {}
+ZMap::ZMap(const GridSpec& grid, double initialHeight) : grid_(grid) {
+  // A large map asks the kernel for 2 MB pages before its first touch: 512 times fewer
+  // page faults while it is filled (on a VM each costs microseconds: 0.8 s for the 3.2 GB
+  // map of B1), and fewer TLB misses while tiles walk its rows. Only advice: where the
+  // kernel has none to give, nothing changes.
+  const size_t n = size_t(grid.cells());
+  heights_.reserve(n);
+  constexpr uintptr_t kHuge = uintptr_t(1) << 21;
+  const uintptr_t begin = reinterpret_cast<uintptr_t>(heights_.data());
+  const uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1);
+  const uintptr_t last = (begin + n * sizeof(double)) & ~(kHuge - 1);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+  heights_.assign(n, initialHeight);
+}
 
 double ZMap::minHeight() const {
   return heights_.empty() ? 0.0 : *std::min_element(heights_.begin(), heights_.end());
