@@ -127,8 +127,8 @@ LowestPoint SweptMove::planeHint(double x, double y) const {
   return segment_ ? segment_->lowestPoint(x, y) : stationaryLowestPoint(0.5, x, y);
 }
 
-LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo,
-                                           double cutoff, double cutoffAnchor) const {
+LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo, double cutoff,
+                                           double cutoffAnchor) const {
   if (segment_) return segment_->lowestPoint(x, y, memo, cutoff);
   return turningLowestPoint(x, y, cutoff, cutoffAnchor);
 }

@@ -4,8 +4,9 @@
 // A move whose axis is constant is a SweptSegment (the convex Minkowski sweep,
 // swept_segment.cpp); a move whose axis turns (CL data with a new axis at every point,
 // a 5-axis machine's rotary motion) by the rim and face contacts and ray clearance of
-// swept_move.cpp, or the certified search over t (certified_search.h). Either way the height is the lowest point of the true swept solid,
-// with a proven lower bound within 1e-9 mm of the height returned.
+// swept_move.cpp, or the certified search over t (certified_search.h). Either way the height is the
+// lowest point of the true swept solid, with a proven lower bound within 1e-9 mm of the height
+// returned.
 //
 // Memory: sizeof(SweptMove) bytes per move (440), plus, for a constant-axis
 // move, one SweptSegment on the heap (952 bytes; see bytesPerMove()).
@@ -44,8 +45,8 @@ class SweptMove {
   // `cutoff` may be reported as a miss; the height returned otherwise does not depend
   // on `cutoff`, `memo` or `cutoffAnchor`: the t in [0, 1] a turning move first tries
   // to prove it stays above the cutoff from (swept_move.cpp step 4a; NaN: the knots').
-  LowestPoint lowestPoint(double x, double y, SectionMemo* memo = nullptr,
-                          double cutoff = HUGE_VAL, double cutoffAnchor = NAN) const;
+  LowestPoint lowestPoint(double x, double y, SectionMemo* memo = nullptr, double cutoff = HUGE_VAL,
+                          double cutoffAnchor = NAN) const;
 
   // The lowest point of the cutter standing at pose(t) alone: a convex function of
   // (x, y) (K(t) is convex) at or above the swept solid's heights.

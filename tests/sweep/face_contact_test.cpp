@@ -59,7 +59,7 @@ FaceCase randomFaceCase(std::mt19937_64& rng, int k, double maxLeanDeg, double m
     c.curve = PoseCurve::rotary(kin, p0, p1, tilt0, tilt1, spin0, spin1);
     c.refCurve = {p0, p1, [=](double t) {
                     return conventionAxis(kin, tilt0 + (tilt1 - tilt0) * t,
-                                               spin0 + (spin1 - spin0) * t);
+                                          spin0 + (spin1 - spin0) * t);
                   }};
     return c;
   }
