@@ -62,9 +62,17 @@ std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& pat
 
 SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,
                           const GridSpec& grid, const SimulationOptions& options) {
+  // The progress callback is also where the caller stops a run (a Ctrl-C throws there):
+  // it hears of the scene and of the map's first touch too, neither of which polls
+  // inside (seconds on a large 5-axis path or a map of gigabytes).
+  const auto phaseDone = [&] {
+    if (options.cast.progress) options.cast.progress(0, grid.cells());
+  };
   const std::unique_ptr<SweptScene> scene = buildScene(cutter, path, stock, grid.spacing, options);
+  phaseDone();
   SimulationResult result;
   result.map = ZMap(grid, stock.max.z);
+  phaseDone();
   result.cast = castZMap(*scene, result.map, options.cast);
   result.scene = scene->stats();
   return result;
