@@ -11,8 +11,10 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 [ $# -gt 0 ] && shift
 build=build-fuzz
+# -O1 -g1 as in scripts/sanitize.sh: the instrumented build compiles about twice as fast.
 CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DSCALLOP_FUZZ=ON -DSCALLOP_BUILD_TESTS=OFF >/dev/null
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSCALLOP_FUZZ=ON \
+  -DSCALLOP_BUILD_TESTS=OFF >/dev/null
 names=${*:-$(cd tests/fuzz && ls *_fuzz.cpp | sed 's/_fuzz\.cpp$//')}
 targets=""
 for n in $names; do targets="$targets ${n}_fuzz"; done

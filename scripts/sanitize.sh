@@ -15,7 +15,12 @@
 set -eu
 cd "$(dirname "$0")/.."
 build=build-asan
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCALLOP_SANITIZE=ON >/dev/null
+# -O1 -g1, as the sanitizers' own documentation suggests: line tables are all a report's
+# stack trace needs, and GCC compiles the instrumented code 2.3 times faster than at
+# -O2 -g (55.8 s -> 23.8 s for tools/cli/collect_command.cpp; the cold build was 21 of
+# CI's 42 minutes).
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSCALLOP_SANITIZE=ON >/dev/null
 cmake --build "$build" -j "$(nproc)" --target scallop scallop_tests
 # detect_leaks: LeakSanitizer works here (it needs ptrace-free /proc access, which CI
 # containers allow). abort_on_error gives a core-dump-style stop that ctest reports.
