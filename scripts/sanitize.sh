@@ -1,7 +1,8 @@
 #!/bin/sh
-# Builds scallop and its test suite with AddressSanitizer + UndefinedBehaviorSanitizer
-# (-DSCALLOP_SANITIZE=ON) in build-asan and runs the whole suite there. Any memory
-# error, leak or undefined behaviour aborts the test that hit it, so ctest fails.
+# Builds scallop with AddressSanitizer + UndefinedBehaviorSanitizer (-DSCALLOP_SANITIZE=ON)
+# in build-asan, with its test suite (the tests' own files uninstrumented,
+# tests/CMakeLists.txt), and runs the whole suite there. Any memory error, leak or
+# undefined behaviour in scallop's code aborts the test that hit it, so ctest fails.
 # Embree, TBB and OpenImageIO are Debian's uninstrumented shared libraries: errors
 # inside them are not seen, but our code's use of their buffers is.
 # Tests labelled asan_slow are left out, each for a reason given where it is labelled
