@@ -15,8 +15,9 @@ struct CastOptions {
   // scene's tiles were grown for (sceneOptionsFor: about 64 um a side, 8 to 32 cells).
   int64_t regionCells = 0;
   // Called from worker threads (serialised) with cells done so far and the total;
-  // simulate() also calls it with 0 done after each phase before the cast. It may throw
-  // to stop the run (tools/cli/interrupt.h): the exception leaves the cast.
+  // simulate() (and the banded run, tools/run) also call it with 0 done after each phase
+  // before the cast. It may throw to stop the run (tools/cli/interrupt.h): the exception
+  // leaves the cast.
   std::function<void(int64_t done, int64_t total)> progress;
 };
 

@@ -131,10 +131,16 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
         std::fprintf(stderr, "scallop: removed %s, left by a run of its band that was killed\n",
                      leftover.c_str());
 
+  int64_t totalCells = 0, doneCells = 0;
+  for (int64_t b = first; b < end; ++b) totalCells += layout.bandGrid(b, grid).cells();
   SimulationOptions options;
   options.cutting = job.cutting;
+  options.cast.progress = [&](int64_t done, int64_t) {
+    if (settings.progress) settings.progress(doneCells + done, totalCells);
+  };
   const std::unique_ptr<SweptScene> scene =
       buildScene(job.cutter, job.path, job.stock, grid.spacing, options);
+  options.cast.progress(0, 0);  // a Ctrl-C during the build stops here (as in simulate())
   const SceneStats sceneStats = scene->stats();
 
   // Everything a band file must agree on with the other bands of its run.
@@ -157,11 +163,6 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
     if (!job.isRaster) output->setPathFile(pathFileReport(job, settings.quiet));
   }
 
-  int64_t totalCells = 0, doneCells = 0;
-  for (int64_t b = first; b < end; ++b) totalCells += layout.bandGrid(b, grid).cells();
-  options.cast.progress = [&](int64_t done, int64_t) {
-    if (settings.progress) settings.progress(doneCells + done, totalCells);
-  };
   std::vector<std::string> written;
   const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   for (int64_t b = first; b < end; ++b) {
