@@ -435,7 +435,8 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
     SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
     ++evaluations;
     // The envelope's plane: below the envelope, so below the teeth's crossings too.
-    const LowestPoint lp = seg.envelopeLowestPoint(x, y, memo);
+    const LowestPoint lp =
+        seg.turning() ? seg.locatedPlaneHint(x, y) : seg.envelopeLowestPoint(x, y, memo);
     TilePlane plane;
     if (planeFrom(seg, lp, x, y, plane)) cand.a = plane.a, cand.b = plane.b, cand.c = plane.c;
   }

@@ -1,11 +1,21 @@
 // The knots' contacts and their per-thread cache.
 //
 // A knot (i, j) of a move holds the rim contact (t, rim direction) of the vertical line
-// through (i h, j h), h the move's knot spacing, located from the default start; a line
-// through (x, y) with i h <= x < (i + 1) h, j h <= y < (j + 1) h starts from the bilinear
-// blend of its four knots. Every value here is a function of the move and the knot, and
-// the cache only saves locating it again: whether an entry was there, or was evicted by
-// another thread's order of work, cannot change a start, hence a height.
+// through (i h, j h), h the move's knot spacing, located from the default start, and how
+// that contact moves with the line (RimSensitivity, rim_contact.h). A line through
+// (x, y) with i h <= x < (i + 1) h, j h <= y < (j + 1) h starts from the blend of its
+// four knots: with bilinear weights w_k,
+//     t = sum_k w_k (t_k + (1/2) grad t_k . (q - q_k)),
+// the mean of the bilinear interpolant and of the corners' tangent planes blended alike.
+// Why: along x (weights 1 - a, a at q = a h) a quadratic's bilinear interpolant is
+// a (1 - a) h^2 f''/2 too high and the blended tangents are as much too low, and
+// sum_k w_k (q - q_k) = 0 makes the tangents exact on x y; so the start is exact for
+// quadratics, its error O(h^3) instead of bilinear's O(h^2), and Newton's method mostly
+// converges at its first evaluation. The rim direction is blended as a vector, then
+// turned by the same half-weighted tangents' angle.
+// Every value here is a function of the move and the knot, and the cache only saves
+// locating it again: whether an entry was there, or was evicted by another thread's
+// order of work, cannot change a start, hence a height.
 #include "sweep/contact_knots.h"
 
 #include <algorithm>
@@ -20,21 +30,23 @@ namespace {
 
 // Direct-mapped caches by (move, i, j). Cells: the cell [i, i + 1) x [j, j + 1) (in
 // units of h) with its four corner knots, as floats (a start needs no more, and the
-// rounding is the same on every thread), one 64-byte entry, so a line costs one lookup;
+// rounding is the same on every thread), two cache lines, so a line costs one lookup;
 // 2048 entries hold the cells of every move a 64-cell tile asks about.
 struct KnotCell {
   uint64_t id;  // 0: empty
   int32_t i, j;
-  float t[4], cs[4], sn[4];  // corners (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1); t NaN: none
+  // Corners (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1): t (NaN: none), the rim
+  // direction, and h/2 times the derivatives of t and phi in x and y.
+  float t[4], cs[4], sn[4], tx[4], ty[4], px[4], py[4];
 };
-static_assert(sizeof(KnotCell) == 64, "one cache line a cell");
+static_assert(sizeof(KnotCell) == 128, "two cache lines a cell");
 
-// Knots themselves, 32 bytes each, by (move, i, j): each is located once however many of
+// Knots themselves, 48 bytes each, by (move, i, j): each is located once however many of
 // its four cells are asked for.
 struct Knot {
   uint64_t id;  // 0: empty
   int32_t i, j;
-  float t, cs, sn;  // t NaN: no contact
+  float t, cs, sn, tx, ty, px, py;  // t NaN: no contact; as in KnotCell
 };
 
 uint64_t slotHash(uint64_t id, int32_t i, int32_t j) {
@@ -52,10 +64,17 @@ struct KnotCache {
                    const PoseCurve& curve) {
     Knot& k = knots[slotHash(id, i, j) & (kKnots - 1)];
     if (k.id != id || k.i != i || k.j != j) {
-      const RimContact rim = locateRimContact(cutter, curve, double(i) * h, double(j) * h);
+      RimSensitivity d;
+      const RimContact rim = locateRimContact(cutter, curve, double(i) * h, double(j) * h, {}, &d);
       k.id = id, k.i = i, k.j = j;
-      k.t = rim.found ? float(rim.t) : std::numeric_limits<float>::quiet_NaN();
-      k.cs = float(rim.cosPhi), k.sn = float(rim.sinPhi);
+      // At a move's end, the smooth extension's minimum past it (RimSensitivity).
+      k.t = rim.found ? float(rim.t + d.tBeyond) : std::numeric_limits<float>::quiet_NaN();
+      const double cs = rim.cosPhi - rim.sinPhi * d.phiBeyond;
+      const double sn = rim.sinPhi + rim.cosPhi * d.phiBeyond, n = std::hypot(cs, sn);
+      k.cs = float(cs / n), k.sn = float(sn / n);
+      const double half = 0.5 * h;
+      k.tx = float(half * d.dtdx), k.ty = float(half * d.dtdy);
+      k.px = float(half * d.dphidx), k.py = float(half * d.dphidy);
     }
     return k;
   }
@@ -67,6 +86,7 @@ struct KnotCache {
       for (int k = 0; k < 4; ++k) {
         const Knot& corner = knot(id, i + (k & 1), j + (k >> 1), h, cutter, curve);
         c.t[k] = corner.t, c.cs[k] = corner.cs, c.sn[k] = corner.sn;
+        c.tx[k] = corner.tx, c.ty[k] = corner.ty, c.px[k] = corner.px, c.py[k] = corner.py;
       }
     }
     return c;
@@ -102,13 +122,21 @@ RimStart contactStart(uint64_t id, double spacing, const Cutter& cutter, const P
   const KnotCell& cell = cache.cell(id, i, j, spacing, cutter, curve);
   const double wx = u - fi, wy = v - fj;
   const double w[4] = {(1 - wx) * (1 - wy), wx * (1 - wy), (1 - wx) * wy, wx * wy};
-  double t = 0, cs = 0, sn = 0;
-  for (int k = 0; k < 4; ++k)
-    t += w[k] * cell.t[k], cs += w[k] * cell.cs[k], sn += w[k] * cell.sn[k];
+  // (q - q_k) / h for the corners: (wx - (k & 1), wy - (k >> 1)).
+  const double ox[4] = {wx, wx - 1, wx, wx - 1}, oy[4] = {wy, wy, wy - 1, wy - 1};
+  double t = 0, cs = 0, sn = 0, turn = 0;
+  for (int k = 0; k < 4; ++k) {
+    t += w[k] * (cell.t[k] + cell.tx[k] * ox[k] + cell.ty[k] * oy[k]);
+    cs += w[k] * cell.cs[k], sn += w[k] * cell.sn[k];
+    turn += w[k] * (cell.px[k] * ox[k] + cell.py[k] * oy[k]);
+  }
   const double n = std::sqrt(cs * cs + sn * sn);
   // A corner without a contact (NaN), or corners whose rim directions disagree: no blend.
   if (!(std::isfinite(t) && n > 0.5)) return start;
-  start.t = t, start.hasDirection = true, start.cosPhi = cs / n, start.sinPhi = sn / n;
+  // The blended direction turned by `turn` (radians, small: to first order, then unit).
+  const double c1 = cs - sn * turn, s1 = sn + cs * turn, n1 = std::sqrt(c1 * c1 + s1 * s1);
+  start.t = std::clamp(t, 0.0, 1.0), start.hasDirection = true;
+  start.cosPhi = c1 / n1, start.sinPhi = s1 / n1;
   return start;
 }
 

@@ -92,6 +92,7 @@ PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where)
   }
   c.phi_ = phi;
   c.v_ = normalize(a1 - a0 * dot(a0, a1));
+  c.w_ = cross(c.u_, c.v_);
   c.omega_ = phi;
   c.axisMiddle_ = c.u_ * std::cos(phi * 0.5) + c.v_ * std::sin(phi * 0.5);  // axis(0.5)
   return c;
@@ -154,8 +155,7 @@ Vec3 PoseCurve::forward(double t) const {
   return rotZ(tiltRotation(bc, q0_ + dq_ * t, -tilt) + e_, -spin) + c_;
 }
 
-Vec3 PoseCurve::tipVelocity(double t) const {
-  if (linearTip()) return tip1_ - tip0_;
+Vec3 PoseCurve::curvedTipVelocity(double t) const {
   // tip = Z(phi) (T(psi) q + e) + c with phi = -C(t), psi = -T(t); a rotation about the
   // unit axis n by angle a has d/da R v = n x R v.
   const bool bc = kind_ == Kind::JointBC;
@@ -171,8 +171,7 @@ double PoseCurve::tipSpeedBound() const {
   return std::max(length(tipVelocity(0)), length(tipVelocity(1))) + 0.5 * tipAccel_;
 }
 
-Vec3 PoseCurve::tipAcceleration(double t) const {
-  if (linearTip()) return {};
+Vec3 PoseCurve::curvedTipAcceleration(double t) const {
   // With P = T(psi) q and W = P + e: P' = -dT n x P + T dq, P'' = -dT n x (P' + T dq);
   // tip' = -dC z x (Z W) + Z P', so tip'' = -dC z x (tip' + Z P') + Z P''.
   const bool bc = kind_ == Kind::JointBC;
@@ -184,12 +183,6 @@ Vec3 PoseCurve::tipAcceleration(double t) const {
   const Vec3 zp1 = rotZ(p1, -spin);
   const Vec3 v = cross(z, rotZ(tq + e_, -spin)) * -dSpin_ + zp1;
   return cross(z, v + zp1) * -dSpin_ + rotZ(p2, -spin);
-}
-
-Vec3 PoseCurve::tip(double t) const {
-  if (t >= 1) return tip1_;
-  if (!linearTip()) return t <= 0 ? tip0_ : forward(t);
-  return tip0_ + (tip1_ - tip0_) * t;
 }
 
 Vec3 PoseCurve::axis(double t) const {
@@ -208,7 +201,7 @@ Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
   if (omega_ == 0 || ta == tb) return v;
   if (kind_ == Kind::Slerp) {
     // Rodrigues' formula about w = u x v (unit: u_ and v_ are orthonormal).
-    const Vec3 w = cross(u_, v_);
+    const Vec3& w = w_;
     const double angle = phi_ * (tb - ta), c = std::cos(angle), s = std::sin(angle);
     return v * c + cross(w, v) * s + w * (dot(w, v) * (1 - c));
   }
@@ -220,8 +213,7 @@ Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
   return rotZ(rotX(rotX(rotZ(v, spinA), tiltA), -tiltB), -spinB);
 }
 
-PoseFrame PoseCurve::frame(double t) const {
-  PoseFrame f;
+void PoseCurve::frame(double t, PoseFrame& f) const {
   f.t = t;
   f.tip = tip(t);
   f.velocity = tipVelocity(t);
@@ -229,8 +221,9 @@ PoseFrame PoseCurve::frame(double t) const {
   f.axis = axis(t);
   if (kind_ == Kind::Slerp) {
     // The rotation is about w = u x v, which lies across every axis of the move.
-    f.e1 = omega_ > 0 ? cross(u_, v_) : normalize(cross(u_, acrossHelper(u_)));
-    f.spin = omega_ > 0 ? f.e1 * phi_ : Vec3{};
+    f.e1 = omega_ > 0 ? w_ : normalize(cross(u_, acrossHelper(u_)));
+    f.spin = omega_ > 0 ? w_ * phi_ : Vec3{};
+    f.spinRate = {};
   } else {
     // A unit vector across the start axis, carried to t (less the carry's round-off).
     const Vec3 e = carry(normalize(cross(u_, acrossHelper(u_))), 0, t);
@@ -238,12 +231,9 @@ PoseFrame PoseCurve::frame(double t) const {
     f.spin = spin(t), f.spinRate = spinRate(t);
   }
   f.e2 = cross(f.axis, f.e1);
-  return f;
 }
 
-Vec3 PoseCurve::spin(double t) const {
-  if (omega_ == 0) return {};
-  if (kind_ == Kind::Slerp) return cross(u_, v_) * phi_;  // a fixed axis, constant rate
+Vec3 PoseCurve::rotarySpin(double t) const {
   // R = A(t) B(t) with A = Rz(-C) and B = Ry(-B) or Rx(-A): Omega = Omega_A + A Omega_B.
   const double spin = spin0_ + dSpin_ * clampUnit(t);
   const Vec3 tiltAxis = tableBC() ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};

@@ -73,11 +73,15 @@ class PoseCurve {
   // otherwise linear(move.from, move.to, where).
   static PoseCurve ofMove(const ToolPath& path, const Move& move, const char* where = "path move");
 
-  Vec3 tip(double t) const;
+  Vec3 tip(double t) const {
+    if (t >= 1) return tip1_;
+    if (!linearTip()) return t <= 0 ? tip0_ : forward(t);
+    return tip0_ + (tip1_ - tip0_) * t;
+  }
   // d tip / dt (mm per unit t).
-  Vec3 tipVelocity(double t) const;
+  Vec3 tipVelocity(double t) const { return linearTip() ? tip1_ - tip0_ : curvedTipVelocity(t); }
   // d^2 tip / dt^2 (mm per unit t^2): zero for the kinds whose tip is linear.
-  Vec3 tipAcceleration(double t) const;
+  Vec3 tipAcceleration(double t) const { return linearTip() ? Vec3{} : curvedTipAcceleration(t); }
   // Proven bounds over [0, 1] of |d^2 tip / dt^2| and |d^3 tip / dt^3| (mm per unit
   // t^2, t^3): 0 for the kinds whose tip is linear.
   double tipAccelBound() const { return tipAccel_; }
@@ -91,13 +95,22 @@ class PoseCurve {
   Pose pose(double t) const { return {tip(t), axis(t)}; }
   // The cutter's angular velocity Omega(t) (rad per unit t; a direction n fixed to the
   // cutter has n' = Omega x n) and its derivative Omega'(t).
-  Vec3 spin(double t) const;
+  Vec3 spin(double t) const {
+    if (omega_ == 0) return {};
+    return kind_ == Kind::Slerp ? w_ * phi_ : rotarySpin(t);  // slerp: a fixed axis, constant rate
+  }
   Vec3 spinRate(double t) const;
   // The pose at t with two unit directions e1, e2 across the axis, fixed to the cutter
   // (carried by R(t)), so that (e1, e2, axis) is a right-handed orthonormal frame turning
   // with the cutter: a cutter point k = alpha e1 + beta e2 + s axis has dk/dt = spin x k.
   // For slerp e1 is the fixed turning axis itself (no trigonometry beyond axis(t)).
-  PoseFrame frame(double t) const;
+  PoseFrame frame(double t) const {
+    PoseFrame f;
+    frame(t, f);
+    return f;
+  }
+  // The same, written into `f` (no copy of its ten vectors).
+  void frame(double t, PoseFrame& f) const;
   // A direction fixed to the cutter, carried from its pose at ta to its pose at tb:
   // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: certified_search.cpp.)
   Vec3 carry(const Vec3& v, double ta, double tb) const;
@@ -112,13 +125,18 @@ class PoseCurve {
  private:
   enum class Kind : unsigned char { Slerp, TableBC, TableAC, JointBC, JointAC };
   bool tableBC() const { return kind_ == Kind::TableBC || kind_ == Kind::JointBC; }
-  // Joint-linear: the forward kinematics at t of the linear joints.
+  // Joint-linear: the forward kinematics at t of the linear joints, and its derivatives.
   Vec3 forward(double t) const;
+  Vec3 curvedTipVelocity(double t) const;
+  Vec3 curvedTipAcceleration(double t) const;
+  Vec3 rotarySpin(double t) const;
   Kind kind_ = Kind::Slerp;
   Vec3 tip0_, tip1_;
   // Slerp: axis(t) = u_ cos(phi t) + v_ sin(phi t), with u_ = a0, v_ the unit vector
   // across it towards a1, and the exact end axis a1_ returned at t = 1.
   Vec3 u_, v_, a1_;
+  Vec3 w_;  // u_ x v_, the unit axis the cutter turns about
+
   Vec3 axisMiddle_;  // axis(0.5), computed once
   double phi_ = 0;
   // Rotary: tilt (B or A) and spin (C) angles at t = 0 and their changes, radians.

@@ -22,6 +22,12 @@
 // end), and a step leaving [0, 1] is clamped. Quadratic convergence takes 3 to 5 steps
 // from the middle of a move on CAM paths.
 //
+// How the contact moves with the line (RimSensitivity, for the knots' starts): at the
+// minimum grad g = 0 holds for every nearby line, so differentiating it in the line's x
+//     H d(t, phi)/dx = -(d g_t/dx, d g_phi/dx),   d g_i/dx = -(c_i.x + (D.D_i) D_x / s^2) / s
+// (D depends on x through D_x = c_x - x, and s through s_x = D_x / s); the same in y.
+// At a move's end, t stays put and only phi moves: d phi/dx = -(d g_phi/dx) / g_phiphi.
+//
 // Why nothing here needs a proof: every (x, y, g(t, phi)) lies on a ball of radius r
 // round a point of C, so in K' = C (+) Ball(r), and in K(t) where its height along the
 // axis, r + (p - c).a, is at most the flute length L (checked: a short flute, L < 2r,
@@ -48,6 +54,7 @@ constexpr double kDecrementDone = 1e-10;
 struct Local {
   bool ok = false;
   double g = 0, gt = 0, gp = 0, gtt = 0, gtp = 0, gpp = 0;
+  double gtx = 0, gty = 0, gpx = 0, gpy = 0;  // d g_t / dx, ..., d g_phi / dy of the line
   Vec3 normal;
 };
 
@@ -66,17 +73,18 @@ Local evaluate(const Cutter& cutter, const PoseFrame& f, double x, double y, dou
   const double dx = c.x - x, dy = c.y - y, dd = dx * dx + dy * dy;
   const double ss = r * r - dd;
   if (!(ss > 1e-6 * r * r)) return out;  // l misses the ball, or grazes it steeply
-  const double s = std::sqrt(ss);
+  const double s = std::sqrt(ss), is = 1 / s, is2 = is * is;
   const double dt = dx * ct.x + dy * ct.y, dp = dx * cp.x + dy * cp.y;  // D.D_i
   out.ok = true;
   out.g = c.z - s;
-  out.gt = ct.z + dt / s;
-  out.gp = cp.z + dp / s;
-  const double s3 = s * ss;
-  out.gtt = ctt.z + (ct.x * ct.x + ct.y * ct.y + dx * ctt.x + dy * ctt.y) / s + dt * dt / s3;
-  out.gtp = ctp.z + (ct.x * cp.x + ct.y * cp.y + dx * ctp.x + dy * ctp.y) / s + dt * dp / s3;
-  out.gpp = cpp.z + (cp.x * cp.x + cp.y * cp.y + dx * cpp.x + dy * cpp.y) / s + dp * dp / s3;
-  out.normal = Vec3{-dx, -dy, -s} / r;
+  out.gt = ct.z + dt * is;
+  out.gp = cp.z + dp * is;
+  out.gtt = ctt.z + (ct.x * ct.x + ct.y * ct.y + dx * ctt.x + dy * ctt.y + dt * dt * is2) * is;
+  out.gtp = ctp.z + (ct.x * cp.x + ct.y * cp.y + dx * ctp.x + dy * ctp.y + dt * dp * is2) * is;
+  out.gpp = cpp.z + (cp.x * cp.x + cp.y * cp.y + dx * cpp.x + dy * cpp.y + dp * dp * is2) * is;
+  out.gtx = -(ct.x + dt * dx * is2) * is, out.gty = -(ct.y + dt * dy * is2) * is;
+  out.gpx = -(cp.x + dp * dx * is2) * is, out.gpy = -(cp.y + dp * dy * is2) * is;
+  out.normal = Vec3{-dx, -dy, -s} * (1 / r);
   return out;
 }
 
@@ -102,10 +110,38 @@ void startDirection(const Cutter& cutter, const PoseFrame& f, double x, double y
   }
 }
 
+// d(t, phi)/d(x, y) at a minimum where the last step's Hessian was positive definite
+// (the header's derivation); at a move's end, those of the unconstrained minimum past it,
+// with the Newton step there (g's Hessian, where it is not positive definite there, gives
+// the end's own: t fixed).
+RimSensitivity sensitivityAt(const Local& L, bool ball, bool atEnd) {
+  RimSensitivity d;
+  if (ball) {
+    if (!(L.gtt > 0)) return d;
+    d.dtdx = -L.gtx / L.gtt, d.dtdy = -L.gty / L.gtt;
+    if (atEnd) d.tBeyond = -L.gt / L.gtt;
+    return d;
+  }
+  const double det = L.gtt * L.gpp - L.gtp * L.gtp;
+  if (!(L.gtt > 0 && det > 0)) {
+    d.dphidx = -L.gpx / L.gpp, d.dphidy = -L.gpy / L.gpp;
+    return d;
+  }
+  d.dtdx = -(L.gpp * L.gtx - L.gtp * L.gpx) / det;
+  d.dtdy = -(L.gpp * L.gty - L.gtp * L.gpy) / det;
+  d.dphidx = -(L.gtt * L.gpx - L.gtp * L.gtx) / det;
+  d.dphidy = -(L.gtt * L.gpy - L.gtp * L.gty) / det;
+  if (atEnd) {
+    d.tBeyond = -(L.gpp * L.gt - L.gtp * L.gp) / det;
+    d.phiBeyond = -(L.gtt * L.gp - L.gtp * L.gt) / det;
+  }
+  return d;
+}
+
 }  // namespace
 
 RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double x, double y,
-                            const RimStart& start) {
+                            const RimStart& start, RimSensitivity* sensitivity) {
   RimContact out;
   if (!(cutter.cornerRadius > 0)) return out;
   const bool ball = !(cutter.bottomRadius() > 0);  // phi plays no part
@@ -114,14 +150,15 @@ RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double
   // tangent and renormalises, which is as good a point of the circle as any and needs no
   // trigonometry.
   double cs = 1, sn = 0;
-  PoseFrame f = curve.frame(t);
+  PoseFrame& f = out.pose;  // written in place: returned with the contact
+  curve.frame(t, f);
   if (start.hasDirection) {
     cs = start.cosPhi, sn = start.sinPhi;
   } else if (!ball) {
     startDirection(cutter, f, x, y, cs, sn);
   }
   for (int step = 0; step < kMaxSteps; ++step) {
-    if (step > 0) f = curve.frame(t);
+    if (step > 0) curve.frame(t, f);
     const Local L = evaluate(cutter, f, x, y, cs, sn);
     if (!L.ok) return out;
     // Newton's step, on [0, 1] x R: along phi alone at an end whose slope points out.
@@ -151,9 +188,10 @@ RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double
       const double r = cutter.cornerRadius;
       if (!(r + r * dot(L.normal, f.axis) <= cutter.fluteLength)) return out;
       out.found = true;
-      out.t = t, out.z = L.g, out.normal = L.normal, out.pose = f;
+      out.t = t, out.z = L.g, out.normal = L.normal;
       out.cosPhi = cs, out.sinPhi = sn;
       out.iterations = step;
+      if (sensitivity) *sensitivity = sensitivityAt(L, ball, atEnd);
       return out;
     }
     t += dt;

@@ -31,10 +31,21 @@ struct RimContact {
   int iterations = 0;             // Newton steps taken
 };
 
+// How a found contact moves with the line: the derivatives of its t and phi with
+// respect to the line's x and y (per mm), from the implicit function theorem at the
+// minimum (rim_contact.cpp). Where the contact sits at a move's end, they and the
+// step (tBeyond, phiBeyond) are those of the minimum of g's smooth extension past the
+// end, one unconstrained Newton step away: a start blended from knots on both sides of
+// the end then lands near the contact instead of dragged towards the end.
+struct RimSensitivity {
+  double dtdx = 0, dtdy = 0, dphidx = 0, dphidy = 0;
+  double tBeyond = 0, phiBeyond = 0;  // 0 for a contact inside the move
+};
+
 // Locates the lowest point over t in [0, 1] of the spheres of radius r round the rim
 // circle of K(t) on the vertical line through (x, y), from `start`. Needs
-// cornerRadius > 0.
+// cornerRadius > 0. `sensitivity`, if given, is set where a contact is found.
 RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double x, double y,
-                            const RimStart& start = {});
+                            const RimStart& start = {}, RimSensitivity* sensitivity = nullptr);
 
 }  // namespace scallop

@@ -31,7 +31,7 @@
 //      cannot see. Where both fail, step 3 goes on as before.
 //   6. The rim contact: where the cutter meets l on its corner, the lowest point is the
 //      minimum over (t, phi) of the balls round C's rim, located by Newton's method
-//      (rim_contact.cpp) from the contact interpolated at fixed knots (contact_knots.cpp)
+//      (rim_contact.cpp) from the contact blended from fixed knots (contact_knots.cpp)
 //      and proven by step 4b from its t: on CAM paths ~1.5 evaluations of a closed form
 //      and one proof, no stationary search.
 //   7. The face contact: where the cutter meets l on its flat bottom face, Newton's
@@ -125,6 +125,15 @@ LowestPoint SweptMove::stationaryLowestPoint(double t, double x, double y) const
 
 LowestPoint SweptMove::planeHint(double x, double y) const {
   return segment_ ? segment_->lowestPoint(x, y) : stationaryLowestPoint(0.5, x, y);
+}
+
+LowestPoint SweptMove::locatedPlaneHint(double x, double y) const {
+  if (segment_ || !(cutter_.cornerRadius > 0)) return planeHint(x, y);
+  const RimContact rim = locateRimContact(cutter_, curve_, x, y);
+  if (!rim.found) return planeHint(x, y);
+  LowestPoint lp;
+  lp.hit = true, lp.z = rim.z, lp.normal = rim.normal, lp.t = rim.t;
+  return lp;
 }
 
 LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo, double cutoff,

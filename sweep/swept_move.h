@@ -8,7 +8,7 @@
 // lowest point of the true swept solid, with a proven lower bound within 1e-9 mm of the height
 // returned.
 //
-// Memory: sizeof(SweptMove) bytes per move (440), plus, for a constant-axis
+// Memory: sizeof(SweptMove) bytes per move (472), plus, for a constant-axis
 // move, one SweptSegment on the heap (952 bytes; see bytesPerMove()).
 #pragma once
 
@@ -57,6 +57,10 @@ class SweptMove {
   // the cutter at mid-move for a turning move, which costs one stationary evaluation
   // instead of a search.
   LowestPoint planeHint(double x, double y) const;
+  // A closer one for the same use, at about a tenth of an exact evaluation's cost for a
+  // turning move: where the rim contact is located (rim_contact.h), its point and
+  // normal, unproven (a plane needs none); elsewhere planeHint().
+  LowestPoint locatedPlaneHint(double x, double y) const;
 
   // An upper bound of the swept solid's support function max over the solid of
   // dot(dir, p) (exact for a constant axis). For dir.z < 0 the plane dot(dir, p) =
