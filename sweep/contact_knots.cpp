@@ -29,24 +29,31 @@ namespace scallop {
 namespace {
 
 // Direct-mapped caches by (move, i, j). Cells: the cell [i, i + 1) x [j, j + 1) (in
-// units of h) with its four corner knots, as floats (a start needs no more, and the
-// rounding is the same on every thread), two cache lines, so a line costs one lookup;
-// 2048 entries hold the cells of every move a 64-cell tile asks about.
+// units of h) with what its starts need of its four corner knots, as floats (a start
+// needs no more, and the rounding is the same on every thread), 96 bytes, so a line
+// costs one lookup; 2048 entries hold the cells of every move a 64-cell tile asks about.
+// With corners k = a + 2 b at (i + a, j + b), local coordinates (wx, wy) in [0, 1)^2 and
+// tx_k = (h/2) dt/dx there, the start's sum over the corners is
+//     t = bilinear(t_k) + wx (1 - wx) ((1 - wy) (tx_0 - tx_1) + wy (tx_2 - tx_3))
+//                       + wy (1 - wy) ((1 - wx) (ty_0 - ty_2) + wx (ty_1 - ty_3)),
+// since w_k (q - q_k).x / h is wx (1 - wx) times (1 - wy) or wy, with the sign of a = 0;
+// the same for phi. A cell keeps those differences.
 struct KnotCell {
   uint64_t id;  // 0: empty
   int32_t i, j;
-  // Corners (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1): t (NaN: none), the rim
-  // direction, and h/2 times the derivatives of t and phi in x and y.
-  float t[4], cs[4], sn[4], tx[4], ty[4], px[4], py[4];
+  float t[4], cs[4], sn[4];  // at the corners; t NaN: none
+  float dtx[2], dty[2];      // tx_0 - tx_1, tx_2 - tx_3; ty_0 - ty_2, ty_1 - ty_3
+  float dpx[2], dpy[2];      // the same for phi
 };
-static_assert(sizeof(KnotCell) == 128, "two cache lines a cell");
+static_assert(sizeof(KnotCell) == 96, "a cell in 96 bytes");
 
 // Knots themselves, 48 bytes each, by (move, i, j): each is located once however many of
 // its four cells are asked for.
 struct Knot {
   uint64_t id;  // 0: empty
   int32_t i, j;
-  float t, cs, sn, tx, ty, px, py;  // t NaN: no contact; as in KnotCell
+  float t, cs, sn;       // t NaN: no contact
+  float tx, ty, px, py;  // h/2 times the derivatives of t and phi in x and y
 };
 
 uint64_t slotHash(uint64_t id, int32_t i, int32_t j) {
@@ -83,11 +90,16 @@ struct KnotCache {
     KnotCell& c = cells[slotHash(id, i, j) & (kCells - 1)];
     if (c.id != id || c.i != i || c.j != j) {
       c.id = id, c.i = i, c.j = j;
+      float tx[4], ty[4], px[4], py[4];
       for (int k = 0; k < 4; ++k) {
         const Knot& corner = knot(id, i + (k & 1), j + (k >> 1), h, cutter, curve);
         c.t[k] = corner.t, c.cs[k] = corner.cs, c.sn[k] = corner.sn;
-        c.tx[k] = corner.tx, c.ty[k] = corner.ty, c.px[k] = corner.px, c.py[k] = corner.py;
+        tx[k] = corner.tx, ty[k] = corner.ty, px[k] = corner.px, py[k] = corner.py;
       }
+      c.dtx[0] = tx[0] - tx[1], c.dtx[1] = tx[2] - tx[3];
+      c.dty[0] = ty[0] - ty[2], c.dty[1] = ty[1] - ty[3];
+      c.dpx[0] = px[0] - px[1], c.dpx[1] = px[2] - px[3];
+      c.dpy[0] = py[0] - py[2], c.dpy[1] = py[1] - py[3];
     }
     return c;
   }
@@ -114,22 +126,25 @@ RimStart contactStart(uint64_t id, double spacing, const Cutter& cutter, const P
   // Trivially constructed (zeros: every entry empty), so no guard on each access.
   thread_local KnotCache cache;
   const double u = x / spacing, v = y / spacing;
-  const double fi = std::floor(u), fj = std::floor(v);
   RimStart start;
-  if (!(spacing > 0)) return start;                                 // no knots
-  if (!(std::fabs(fi) < 1e9 && std::fabs(fj) < 1e9)) return start;  // beyond 15 km
-  const int32_t i = int32_t(fi), j = int32_t(fj);
+  if (!(spacing > 0)) return start;                               // no knots
+  if (!(std::fabs(u) < 1e9 && std::fabs(v) < 1e9)) return start;  // beyond 15 km
+  // floor(u), floor(v) without a library call.
+  const int32_t i = int32_t(u) - (u < double(int32_t(u))),
+                j = int32_t(v) - (v < double(int32_t(v)));
   const KnotCell& cell = cache.cell(id, i, j, spacing, cutter, curve);
-  const double wx = u - fi, wy = v - fj;
-  const double w[4] = {(1 - wx) * (1 - wy), wx * (1 - wy), (1 - wx) * wy, wx * wy};
-  // (q - q_k) / h for the corners: (wx - (k & 1), wy - (k >> 1)).
-  const double ox[4] = {wx, wx - 1, wx, wx - 1}, oy[4] = {wy, wy, wy - 1, wy - 1};
-  double t = 0, cs = 0, sn = 0, turn = 0;
-  for (int k = 0; k < 4; ++k) {
-    t += w[k] * (cell.t[k] + cell.tx[k] * ox[k] + cell.ty[k] * oy[k]);
-    cs += w[k] * cell.cs[k], sn += w[k] * cell.sn[k];
-    turn += w[k] * (cell.px[k] * ox[k] + cell.py[k] * oy[k]);
-  }
+  const double wx = u - i, wy = v - j, bx = wx * (1 - wx), by = wy * (1 - wy);
+  auto bilinear = [&](const float* f) {
+    const double lo = f[0] + wx * (double(f[1]) - f[0]), hi = f[2] + wx * (double(f[3]) - f[2]);
+    return lo + wy * (hi - lo);
+  };
+  auto tangents = [&](const float* dx, const float* dy) {
+    return bx * (dx[0] + wy * (double(dx[1]) - dx[0])) +
+           by * (dy[0] + wx * (double(dy[1]) - dy[0]));
+  };
+  const double t = bilinear(cell.t) + tangents(cell.dtx, cell.dty);
+  const double cs = bilinear(cell.cs), sn = bilinear(cell.sn);
+  const double turn = tangents(cell.dpx, cell.dpy);
   const double n = std::sqrt(cs * cs + sn * sn);
   // A corner without a contact (NaN), or corners whose rim directions disagree: no blend.
   if (!(std::isfinite(t) && n > 0.5)) return start;

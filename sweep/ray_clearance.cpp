@@ -131,19 +131,26 @@ bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T
 // a parabola whose minimum over [-left, right] is closed form. Near a minimum of f
 // (h'(0) ~ 0, h(0) - r ~ 1e-9 mm) this proves in one evaluation what the rungs need
 // ~10 for (their tangents only halve their distance to the minimum).
-bool curvatureClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double left,
+// `at` is ell(0) in the cutter's frame as step 3 left it: s, its part across the axis
+// and that part's length rho, and h0 = dist(ell(0), C).
+struct AxialPoint {
+  double s;
+  Vec3 perp;
+  double rho, h0;
+};
+bool curvatureClears(const CoreDistance& core, const AxialPoint& at, const Vec3& v, double left,
                      double right, double E, double slack) {
   const double T = std::max(left, right);
-  const double s = dot(p, core.a), sv = dot(v, core.a);
-  const Vec3 perp = p - core.a * s, vPerp = v - core.a * sv;
-  const double rho = length(perp), vp = length(vPerp), speed = length(v);
-  const double X = rho - core.rb, sigma = core.r - s;
+  const double sv = dot(v, core.a);
+  const Vec3 vPerp = v - core.a * sv;
+  const double rho = at.rho, vp = length(vPerp), speed = length(v);
+  const double X = rho - core.rb, sigma = core.r - at.s;
   // The rim regime over the whole range, and h bounded away from 0.
   if (!(X > vp * T && sigma > std::fabs(sv) * T && rho > vp * T)) return false;
-  const double h0 = std::sqrt(X * X + sigma * sigma);
+  const double h0 = at.h0;  // hypot(X, sigma) in this regime
   const double hMin = h0 - speed * T, hMax = h0 + speed * T;
   if (!(hMin > 0)) return false;
-  const double rhoDot = dot(perp, vPerp) / rho;
+  const double rhoDot = dot(at.perp, vPerp) / rho;
   const double h1 = (X * rhoDot - sigma * sv) / h0;  // h'(0)
   const double c0 = std::fabs(rhoDot * sigma - (-sv) * X) / h0;
   const double drift = T * vp * vp / (rho - vp * T) + speed * T * speed / hMin;
@@ -170,15 +177,26 @@ bool clearsFrom(const Cutter& c, const PoseCurve& curve, const Vec3& q, double a
   const CoreDistance core{c.bottomRadius(), c.cornerRadius, c.fluteLength, axis};
   const double slack = 1e-12 * (1 + D + c.fluteLength);
 
-  // Step 3 first (cheap, and it needs dist > 0 at the anchor anyway).
-  Vec3 n0;
-  if (!(core.at(g0, &n0) > core.r + slack)) {
+  // Step 3 first (cheap, and it needs dist > 0 at the anchor anyway): dist(g0, C) and
+  // the z part of its gradient n0, as CoreDistance::at has them.
+  AxialPoint at;
+  at.s = dot(g0, axis);
+  at.perp = g0 - axis * at.s;
+  at.rho = length(at.perp);
+  const double dx = std::max(0.0, at.rho - core.rb);
+  double ds = 0, sign = 0;
+  if (at.s < core.r) ds = core.r - at.s, sign = -1;
+  if (at.s > core.L) ds = at.s - core.L, sign = 1;
+  at.h0 = std::sqrt(dx * dx + ds * ds);
+  if (!(at.h0 > core.r + slack)) {
     if (insideAtAnchor) *insideAtAnchor = true;
     return false;
   }
-  if (!(n0.z + (2 * V / core.r + omega) * reach < 0)) return false;
+  const double n0z =
+      (at.perp.z * (at.rho > core.rb ? dx / at.rho : 0) + axis.z * (sign * ds)) / at.h0;
+  if (!(n0z + (2 * V / core.r + omega) * reach < 0)) return false;
   // Step 2: the curvature bound in one go where it applies, else rungs on both sides.
-  if (curvatureClears(core, g0, g1, left, right, E, slack)) return true;
+  if (curvatureClears(core, at, g1, left, right, E, slack)) return true;
   return sideClears(core, g0, g1, right, E, slack) && sideClears(core, g0, -g1, left, E, slack);
 }
 

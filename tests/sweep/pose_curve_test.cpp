@@ -1,12 +1,15 @@
 // PoseCurve's machine kinds (sweep/pose_curve.h): the table-table forward kinematics
 // against LinuxCNC's trtfuncs formulas written out here term by term, and the tip's
 // velocity, acceleration and proven acceleration and jerk bounds against finite
-// differences.
+// differences; and the slerp's axis (its own sine and cosine for small angles) against
+// the same formula in long double.
 #include "sweep/pose_curve.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "sweep/machine_reference.h"
@@ -138,6 +141,53 @@ TEST(PoseCurve, LinearTipKindsHaveZeroBounds) {
   TableMachine m;
   m.offset = {1, 0, 40};
   EXPECT_TRUE(PoseCurve::jointLinear(m, still).linearTip());
+}
+
+// axis(t) = u cos(phi t) + v sin(phi t) for turns from 1e-9 rad to 3 rad, against the
+// same written in long double with the library's sinl and cosl: within 4e-16 per
+// component (a few units in the last place), unit to 4e-16, and exactly the end axes at
+// t = 0 and 1. Small angles take the curve's own Taylor series (pose_curve.cpp), large
+// ones the library.
+TEST(PoseCurve, SlerpAxisIsTheGreatCircleToTheLastBits) {
+  std::mt19937_64 rng(71);
+  std::uniform_real_distribution<double> u(-1, 1);
+  double worst = 0, worstUnit = 0;
+  int samples = 0;
+  for (int k = 0; k < 200; ++k) {
+    const double turn = std::pow(10.0, -9 + 9.5 * (k / 199.0));  // 1e-9 .. ~3.2 rad
+    if (turn >= 3.1) continue;
+    const Vec3 a0 = normalize(Vec3{0.5 * u(rng), 0.5 * u(rng), 1});
+    const Vec3 w = normalize(cross(a0, Vec3{u(rng), u(rng), u(rng)}));
+    const Vec3 a1 = a0 * std::cos(turn) + cross(w, a0) * std::sin(turn);
+    const PoseCurve c = PoseCurve::linear({{0, 0, 0}, a0}, {{1, 0, 0}, a1});
+    if (c.constantAxis()) continue;
+    // The curve's own u and v: a0 (normalised again, as the curve does) and the unit
+    // vector across it towards a1.
+    const Vec3 u0 = normalize(a0), v = normalize(a1 - u0 * dot(u0, a1));
+    EXPECT_EQ(c.axis(0).x, u0.x);
+    EXPECT_EQ(c.axis(0).z, u0.z);
+    const long double phi = std::atan2(length(cross(u0, normalize(a1))), dot(u0, normalize(a1)));
+    for (int s = 1; s < 16; ++s) {
+      const double t = s / 16.0 + 1e-3 * u(rng);
+      const long double ang = phi * (long double)t;
+      const long double cs = std::cos(ang), sn = std::sin(ang);
+      const Vec3 got = c.axis(t);
+      const long double ex = u0.x * cs + v.x * sn, ey = u0.y * cs + v.y * sn,
+                        ez = u0.z * cs + v.z * sn;
+      const double e =
+          double(std::max({std::fabs(got.x - ex), std::fabs(got.y - ey), std::fabs(got.z - ez)}));
+      worst = std::max(worst, e);
+      const long double len2 =
+          (long double)got.x * got.x + (long double)got.y * got.y + (long double)got.z * got.z;
+      worstUnit = std::max(worstUnit, double(std::fabs(std::sqrt(len2) - 1)));
+      EXPECT_LE(e, 4e-16) << "turn " << turn << " t " << t;
+      ++samples;
+    }
+  }
+  std::printf("PoseCurve slerp axis: %d samples, worst %.3g from long double, |axis| - 1 %.3g\n",
+              samples, worst, worstUnit);
+  EXPECT_LE(worstUnit, 4e-16);
+  EXPECT_GE(samples, 2500);
 }
 
 }  // namespace
