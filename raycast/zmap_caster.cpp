@@ -14,14 +14,17 @@ namespace {
 
 // Heights of the cells [i0, i1) x [j0, j1), a square region of at most regionCells a
 // side, with one candidate search for the whole region:
-//  1. the exact height at the region's centre names a winning segment W;
+//  1. a move W: the last region's winner (next door), or where its cutter misses a
+//     corner of this region, the winner at the region's centre (an exact query);
 //  2. W's heights are at most those of one convex solid inside W's swept solid (the
-//     whole solid for a constant axis; the cutter at the pose of the centre's answer
-//     for a turning move), and over the rectangle of cell centres a convex solid's
-//     heights are at most its largest corner value: no cell ends higher than U = that
-//     (or than its current height), so only moves that can go below U anywhere in the
-//     region can matter (with teeth W's crossings are no convex function: U is then
-//     the region's current heights);
+//     whole solid for a constant axis; the cutter at the pose of W's answer at the
+//     centre for a turning move), and over the rectangle of cell centres a convex
+//     solid's heights are at most its largest corner value: no cell ends higher than
+//     U = that (or than its current height), so only moves that can go below U
+//     anywhere in the region can matter. Any W gives a valid U; the centre's winner the
+//     lowest, its neighbour on the path one a little higher, at a fifth of the cost
+//     (B3: 1.5 % fewer instructions in all, B4 12 %). With teeth W's crossings are no
+//     convex function: U is then the region's current heights;
 //  3. one gathering ray collects those (each also gets the supporting plane of its
 //     solid below the centre), and each cell takes the exact minimum among them
 //     (lowestHeightAmong), which equals lowestHeight() cell by cell.
@@ -35,15 +38,16 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
   for (int64_t j = j0; j < j1; ++j)
     for (int64_t i = i0; i < i1; ++i) ceiling = std::max(ceiling, map.at(i, j));
 
-  uint32_t winner = previousWinner;
-  scene.lowestHeight(0.5 * (x0 + x1), 0.5 * (y0 + y1), ceiling, evals, &cache, &winner);
-  if (winner != UINT32_MAX) previousWinner = winner;
-  double upper = ceiling;
-  if (winner != UINT32_MAX && !scene.segments()[winner].teeth()) {
+  // The cap U of step 2 from a move W: any move gives a valid one, the winner at the
+  // centre the lowest. The last region's winner W (next door) is tried first; only where
+  // its cap is no cap (its cutter misses a corner) is the centre's winner looked up.
+  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  auto capFrom = [&](uint32_t winner) {
+    if (winner == UINT32_MAX || scene.segments()[winner].teeth()) return HUGE_VAL;
     const SweptMove& w = scene.segments()[winner];
     double tCentre = 0;
     if (w.turning()) {
-      tCentre = w.lowestPoint(0.5 * (x0 + x1), 0.5 * (y0 + y1)).t;
+      tCentre = w.lowestPoint(cx, cy).t;
       ++evals;
     }
     double cornerMax = -HUGE_VAL;
@@ -53,8 +57,16 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
       ++evals;
       cornerMax = std::max(cornerMax, lp.hit ? lp.z : HUGE_VAL);
     }
-    upper = std::min(upper, cornerMax);
+    return cornerMax;
+  };
+  double cap = capFrom(previousWinner);
+  if (!(cap < ceiling)) {
+    uint32_t winner = previousWinner;
+    scene.lowestHeight(cx, cy, ceiling, evals, &cache, &winner);
+    if (winner != UINT32_MAX && winner != previousWinner) cap = capFrom(winner);
+    if (winner != UINT32_MAX) previousWinner = winner;
   }
+  const double upper = std::min(ceiling, cap);
   scene.gatherCandidates(x0, y0, x1, y1, upper, candidates);
   // Many candidates (short moves): one exact evaluation each at the centre buys a tight
   // plane that saves many per cell. With few, the tile planes do.
@@ -88,6 +100,8 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
       blockStart = rowStart;
     }
   }
+  // The next region (to the right) starts its cap from this one's last winner.
+  if (blockStart < candidates.size()) previousWinner = candidates[blockStart].segment;
 }
 
 }  // namespace
