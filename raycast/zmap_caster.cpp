@@ -76,8 +76,8 @@ void castRegion(const SweptScene& scene, ZMap& map, int64_t i0, int64_t i1, int6
   // bounds over the block: a cell stops looking at the first that cannot beat it.
   // Neighbouring cells mostly share their winner: each cell tries its left neighbour's
   // (or, first in a block's row, the one below) first, whose height then prunes the
-  // others.
-  constexpr int64_t kBlockCells = 8;
+  // others. (16: on B3 0.9 % fewer instructions than 8 and 3 % fewer than 32.)
+  constexpr int64_t kBlockCells = 16;
   thread_local std::vector<SweptScene::BlockEntry> block;
   uint32_t blockStart = UINT32_MAX;
   for (int64_t bj = j0; bj < j1; bj += kBlockCells) {

@@ -53,15 +53,16 @@ TipPlaneBound tipPlaneBound(const PoseCurve& curve, double x0, double y0, double
   const double S = curve.tipSpeedBound();
   double D = 0;
   for (int i = 0; i < 2; ++i) {
-    double horizontal = 0, vertical = 0;
+    double horizontal2 = 0, vertical = 0;  // (D has a millimetre to spare: no hypot)
     for (const double x : {x0, x1}) {
       for (const double y : {y0, y1}) {
-        horizontal = std::max(horizontal, std::hypot(x - tip[i].x, y - tip[i].y));
+        const double dx = x - tip[i].x, dy = y - tip[i].y;
+        horizontal2 = std::max(horizontal2, dx * dx + dy * dy);
         for (int j = 0; j < 2; ++j)
           vertical = std::max(vertical, std::fabs(a[j] + b[j] * x + c[j] * y - tip[i].z));
       }
     }
-    D = std::max(D, std::hypot(horizontal, vertical));
+    D = std::max(D, std::sqrt(horizontal2 + vertical * vertical));
   }
   D += 0.5 * S + 1;
   const double E = omega * omega * D + 2 * omega * S + curve.tipAccelBound();
