@@ -32,7 +32,7 @@
 //   6. The rim contact: where the cutter meets l on its corner, the lowest point is the
 //      minimum over (t, phi) of the balls round C's rim, located by Newton's method
 //      (rim_contact.cpp) from the contact blended from fixed knots (contact_knots.cpp)
-//      and proven by step 4b from its t: on CAM paths ~1.5 evaluations of a closed form
+//      and proven by step 4b from its t: on CAM paths ~1.2 evaluations of a closed form
 //      and one proof, no stationary search.
 //   7. The face contact: where the cutter meets l on its flat bottom face, Newton's
 //      method on the crossing of l with the tip plane over t, proven by the Taylor form
