@@ -450,9 +450,9 @@ void SweptScene::orderForBlock(const std::vector<Candidate>& candidates, double 
     // A turning move's tip-plane bound stands in for its tile's planes here (B3: 1 % fewer
     // instructions; the cells still consult both).
     const double tip = cand.tip.minOver(x0, y0, x1, y1);
-    const double bound = std::max(
-        {planeMinOver({cand.a, cand.b, cand.c}, x0, y0, x1, y1), tip,
-         tip > -HUGE_VAL ? -HUGE_VAL : planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1)});
+    double bound = std::max(planeMinOver({cand.a, cand.b, cand.c}, x0, y0, x1, y1), tip);
+    if (tip == -HUGE_VAL)
+      bound = std::max(bound, planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1));
     order.push_back({bound - planeSlack(bound), k});
   }
   std::sort(order.begin(), order.end(), [](const BlockEntry& p, const BlockEntry& q) {

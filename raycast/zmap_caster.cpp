@@ -22,7 +22,7 @@ namespace {
 //     solid's heights are at most its largest corner value: no cell ends higher than
 //     U = that (or than its current height), so only moves that can go below U
 //     anywhere in the region can matter. Any W gives a valid U; the centre's winner the
-//     lowest, its neighbour on the path one a little higher, at a fifth of the cost
+//     lowest, its neighbour on the path one a little higher without the exact query
 //     (B3: 1.5 % fewer instructions in all, B4 12 %). With teeth W's crossings are no
 //     convex function: U is then the region's current heights;
 //  3. one gathering ray collects those (each also gets the supporting plane of its

@@ -129,9 +129,9 @@ RimStart contactStart(uint64_t id, double spacing, const Cutter& cutter, const P
   RimStart start;
   if (!(spacing > 0)) return start;                               // no knots
   if (!(std::fabs(u) < 1e9 && std::fabs(v) < 1e9)) return start;  // beyond 15 km
-  // floor(u), floor(v) without a library call.
-  const int32_t i = int32_t(u) - (u < double(int32_t(u))),
-                j = int32_t(v) - (v < double(int32_t(v)));
+  // floor() without a library call (|w| < 1e9 here).
+  const auto floorOf = [](double w) { return int32_t(w) - (w < double(int32_t(w))); };
+  const int32_t i = floorOf(u), j = floorOf(v);
   const KnotCell& cell = cache.cell(id, i, j, spacing, cutter, curve);
   const double wx = u - i, wy = v - j, bx = wx * (1 - wx), by = wy * (1 - wy);
   auto bilinear = [&](const float* f) {

@@ -51,12 +51,21 @@ namespace {
 
 constexpr int kMaxRungs = 48;  // per side; typical: 1 to 4 (growing rungs)
 
+// A point p in the cutter's frame split along the axis: s = p.a, its part across the
+// axis and that part's length rho; and h0 = dist(p, C).
+struct AxialPoint {
+  double s;
+  Vec3 perp;
+  double rho, h0;
+};
+
 // dist(p, C) and its gradient (the unit vector from the nearest point of C), in the
 // cutter's frame: tip at the origin, unit axis a. p must lie outside C (dist > 0).
+// `axial`, if given, keeps the split of p the distance came from.
 struct CoreDistance {
   double rb, r, L;
   Vec3 a;
-  double at(const Vec3& p, Vec3* gradient) const {
+  double at(const Vec3& p, Vec3* gradient, AxialPoint* axial = nullptr) const {
     const double s = dot(p, a);
     const Vec3 perp = p - a * s;
     const double rho = length(perp);
@@ -69,6 +78,7 @@ struct CoreDistance {
       const double radial = rho > rb ? dx / rho : 0;
       *gradient = (perp * radial + a * (sign * ds)) / dist;
     }
+    if (axial) *axial = {s, perp, rho, dist};
     return dist;
   }
   // d^2/dtau^2 of dist(p + tau v, C) at tau = 0 (p outside C): 0 below the flat bottom,
@@ -131,13 +141,7 @@ bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T
 // a parabola whose minimum over [-left, right] is closed form. Near a minimum of f
 // (h'(0) ~ 0, h(0) - r ~ 1e-9 mm) this proves in one evaluation what the rungs need
 // ~10 for (their tangents only halve their distance to the minimum).
-// `at` is ell(0) in the cutter's frame as step 3 left it: s, its part across the axis
-// and that part's length rho, and h0 = dist(ell(0), C).
-struct AxialPoint {
-  double s;
-  Vec3 perp;
-  double rho, h0;
-};
+// `at` is ell(0) as CoreDistance::at left it in step 3.
 bool curvatureClears(const CoreDistance& core, const AxialPoint& at, const Vec3& v, double left,
                      double right, double E, double slack) {
   const double T = std::max(left, right);
@@ -177,24 +181,15 @@ bool clearsFrom(const Cutter& c, const PoseCurve& curve, const Vec3& q, double a
   const CoreDistance core{c.bottomRadius(), c.cornerRadius, c.fluteLength, axis};
   const double slack = 1e-12 * (1 + D + c.fluteLength);
 
-  // Step 3 first (cheap, and it needs dist > 0 at the anchor anyway): dist(g0, C) and
-  // the z part of its gradient n0, as CoreDistance::at has them.
+  // Step 3 first (cheap, and it needs dist > 0 at the anchor anyway); the split of g0
+  // it leaves serves step 2's curvature bound.
+  Vec3 n0;
   AxialPoint at;
-  at.s = dot(g0, axis);
-  at.perp = g0 - axis * at.s;
-  at.rho = length(at.perp);
-  const double dx = std::max(0.0, at.rho - core.rb);
-  double ds = 0, sign = 0;
-  if (at.s < core.r) ds = core.r - at.s, sign = -1;
-  if (at.s > core.L) ds = at.s - core.L, sign = 1;
-  at.h0 = std::sqrt(dx * dx + ds * ds);
-  if (!(at.h0 > core.r + slack)) {
+  if (!(core.at(g0, &n0, &at) > core.r + slack)) {
     if (insideAtAnchor) *insideAtAnchor = true;
     return false;
   }
-  const double n0z =
-      (at.perp.z * (at.rho > core.rb ? dx / at.rho : 0) + axis.z * (sign * ds)) / at.h0;
-  if (!(n0z + (2 * V / core.r + omega) * reach < 0)) return false;
+  if (!(n0.z + (2 * V / core.r + omega) * reach < 0)) return false;
   // Step 2: the curvature bound in one go where it applies, else rungs on both sides.
   if (curvatureClears(core, at, g1, left, right, E, slack)) return true;
   return sideClears(core, g0, g1, right, E, slack) && sideClears(core, g0, -g1, left, E, slack);
