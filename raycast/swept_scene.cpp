@@ -477,7 +477,9 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
   auto evaluate = [&](uint32_t k, double cutoff) {
     const uint32_t segment = candidates[k].segment;
     ++evaluations;
-    SectionMemo* memo = cache ? cache->memoFor(segment, y) : nullptr;
+    const SweptMove& move = impl_->segments[segment];
+    // Section memos serve constant-axis moves only.
+    SectionMemo* memo = cache && !move.turning() ? cache->memoFor(segment, y) : nullptr;
     // A same-pass neighbour of the best move so far (the next or previous move of the
     // path) proves it stays above the cutoff first from the pose the two share.
     double anchor = NAN;
@@ -486,19 +488,20 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
       if (segment == w + 1) anchor = 0;
       if (segment + 1 == w) anchor = 1;
     }
-    const LowestPoint lp = impl_->segments[segment].lowestPoint(x, y, memo, cutoff, anchor);
+    const LowestPoint lp = move.lowestPoint(x, y, memo, cutoff, anchor);
     if (lp.hit && lp.z < best) best = lp.z, winner = k;
   };
   // The candidate's own plane (from the region's centre) is usually the tightest and
   // alone often prunes it; the tile's planes are consulted only when it does not, and a
   // turning move's tip-plane bound (tip_plane_bound.h) only when neither does: it
-  // follows a bottom face as it turns, which world-fixed planes cannot.
+  // follows a bottom face as it turns, which world-fixed planes cannot. Each bound is
+  // lowered by its round-off margin as it is made.
+  const auto lowered = [](double v) { return v - planeSlack(v); };
   auto safeBound = [&](const Candidate& cand) {
-    double bound = cand.a + cand.b * x + cand.c * y;
-    if (bound - planeSlack(bound) < best)
-      bound = std::max(bound, planeBoundAt(impl_->tiles[cand.tile], x, y));
-    if (bound - planeSlack(bound) < best) bound = std::max(bound, cand.tip.at(x, y));
-    return bound - planeSlack(bound);
+    double bound = lowered(cand.a + cand.b * x + cand.c * y);
+    if (bound < best) bound = std::max(bound, lowered(planeBoundAt(impl_->tiles[cand.tile], x, y)));
+    if (bound < best) bound = std::max(bound, lowered(cand.tip.at(x, y)));
+    return bound;
   };
   const uint32_t first = hint && *hint < candidates.size() ? *hint : UINT32_MAX;
   if (first != UINT32_MAX && safeBound(candidates[first]) < best)
