@@ -119,6 +119,13 @@ double hintCutoff(const SweptMove& seg, double best) {
   return seg.turning() && !seg.teeth() ? HUGE_VAL : best;
 }
 
+// The section memo of a constant-axis move for the cell's row (null without a cache, and
+// for a turning move, which keeps none: no hash for it).
+SectionMemo* memoOf(SweptScene::QueryCache* cache, const SweptMove& move, uint32_t segment,
+                    double y) {
+  return cache && !move.turning() ? cache->memoFor(segment, y) : nullptr;
+}
+
 // Plane values are exact up to double round-off; this margin (mm) absorbs it. (Steep
 // planes have coefficients up to 1e3; their round-off stays below 1e-11 mm here.)
 double planeSlack(double v) {
@@ -165,7 +172,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   if (bound - planeSlack(bound) >= cell->best) return;
   const SweptMove& seg = impl->segments[tile.segment];
   ++cell->evaluations;
-  SectionMemo* memo = cell->cache ? cell->cache->memoFor(tile.segment, cell->y) : nullptr;
+  SectionMemo* memo = memoOf(cell->cache, seg, tile.segment, cell->y);
   const LowestPoint lp = seg.lowestPoint(cell->x, cell->y, memo, cell->best);
   if (!lp.hit || !(lp.z < cell->best)) return;
   cell->best = lp.z;
@@ -381,7 +388,7 @@ double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& ev
   CellContext cell = makeContext(x, y, impl_->originZ, ceiling, cache);
   // The guessed segment's height, found first, shortens the ray before it starts.
   if (guess < impl_->segments.size()) {
-    SectionMemo* memo = cache ? cache->memoFor(guess, y) : nullptr;
+    SectionMemo* memo = memoOf(cache, impl_->segments[guess], guess, y);
     ++cell.evaluations;
     const LowestPoint lp =
         impl_->segments[guess].lowestPoint(x, y, memo, hintCutoff(impl_->segments[guess], ceiling));
@@ -432,7 +439,7 @@ void SweptScene::tightenCandidates(std::vector<Candidate>& candidates, double x,
                                    uint64_t& evaluations, QueryCache* cache) const {
   for (Candidate& cand : candidates) {
     const SweptMove& seg = impl_->segments[cand.segment];
-    SectionMemo* memo = cache ? cache->memoFor(cand.segment, y) : nullptr;
+    SectionMemo* memo = memoOf(cache, seg, cand.segment, y);
     ++evaluations;
     // The envelope's plane: below the envelope, so below the teeth's crossings too.
     const LowestPoint lp =
@@ -478,8 +485,7 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
     const uint32_t segment = candidates[k].segment;
     ++evaluations;
     const SweptMove& move = impl_->segments[segment];
-    // Section memos serve constant-axis moves only.
-    SectionMemo* memo = cache && !move.turning() ? cache->memoFor(segment, y) : nullptr;
+    SectionMemo* memo = memoOf(cache, move, segment, y);
     // A same-pass neighbour of the best move so far (the next or previous move of the
     // path) proves it stays above the cutoff first from the pose the two share.
     double anchor = NAN;
