@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raycast/tile_grid.h"
 #include "sweep/contact_knots.h"
 
 namespace scallop {
@@ -14,7 +15,7 @@ SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const Simulation
   // Candidate regions of options.cast.regionCells cells a side (zmap_caster.cpp), by
   // default about 64 um but 8 to 32 cells: a region's candidates are the moves that may
   // be lowest anywhere in it, so a wide region keeps more of them for every cell, while
-  // each region pays a gathering ray and an evaluation per candidate. Measured (exact
+  // each region pays a gathering query and an evaluation per candidate. Measured (exact
   // evaluations a cell): B3's turning path at 10 um, 7.7 with 32 cells, 5.0 with 8; at
   // 20 um 16.5 with 32, 6.7 with 8, 13.3 with 3; B1 at 1 um and B3 at 2 um keep 32.
   const int64_t cells = options.cast.regionCells > 0
@@ -29,7 +30,9 @@ SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const Simulation
 
 double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double stockTop,
                           size_t* moves, const CuttingModel& cutting) {
-  constexpr double kBytesPerTile = 500;  // TileBox (152) + Embree's BVH share, measured
+  // TileBox (152) + Embree's BVH share (measured: 370 on the scene of scene_memory_test)
+  // + the most the tile grid takes a tile.
+  constexpr double kBytesPerTile = 420 + scene_detail::TileGrid::kMaxBytesPerTile;
   // With runout the moves hold the spindle envelope, radius R + runout.
   const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
   double need = 0;

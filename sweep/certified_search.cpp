@@ -116,7 +116,7 @@ struct Interval {
 };
 
 // Searches that hit kMaxSamples before their proof closed (expected: none).
-std::atomic<unsigned long long> unprovenCount{0};
+std::atomic<unsigned long long> unprovenSearchCount{0};
 
 // The horizontal unit direction from the footprint of the axis segment [tip, tip + L a]
 // to (x, y), leaned 1e-3 downwards: a steep plane that rises 1 mm per um outside the
@@ -163,7 +163,7 @@ double turningSupport(const Cutter& cutter, const PoseCurve& curve, const Turnin
 }
 
 unsigned long long unprovenCertifiedSearches() {
-  return unprovenCount.load();
+  return unprovenSearchCount.load();
 }
 
 LowestPoint certifiedLowestPoint(const Cutter& c, const PoseCurve& curve,
@@ -493,7 +493,8 @@ LowestPoint certifiedLowestPoint(const Cutter& c, const PoseCurve& curve,
     push(boundOf(iv.a, is, U));
     push(boundOf(is, iv.b, U));
   }
-  if (openCount > 0 && count >= kMaxSamples) unprovenCount.fetch_add(1, std::memory_order_relaxed);
+  if (openCount > 0 && count >= kMaxSamples)
+    unprovenSearchCount.fetch_add(1, std::memory_order_relaxed);
   return result();
 }
 

@@ -31,7 +31,7 @@ namespace {
 // Direct-mapped caches by (move, i, j). Cells: the cell [i, i + 1) x [j, j + 1) (in
 // units of h) with what its starts need of its four corner knots, as floats (a start
 // needs no more, and the rounding is the same on every thread), 96 bytes, so a line
-// costs one lookup; 2048 entries hold the cells of every move a 64-cell tile asks about.
+// costs one lookup; 2048 entries hold the cells of every move a region of cells asks about.
 // With corners k = a + 2 b at (i + a, j + b), local coordinates (wx, wy) in [0, 1)^2 and
 // tx_k = (h/2) dt/dx there, the start's sum over the corners is
 //     t = bilinear(t_k) + wx (1 - wx) ((1 - wy) (tx_0 - tx_1) + wy (tx_2 - tx_3))

@@ -54,9 +54,9 @@ namespace scallop {
 
 namespace {
 
-constexpr int kMaxSteps = 8;
-constexpr double kDecrementDone = 1e-10;  // mm, as for the rim contact
-constexpr double kMinAxisZ = 1e-3;        // a steeper face is left to the certified search
+constexpr int kFaceNewtonSteps = 8;
+constexpr double kFaceDecrementDone = 1e-10;  // mm, as for the rim contact
+constexpr double kMinAxisZ = 1e-3;            // a steeper face is left to the certified search
 
 // z_face and its first two derivatives at a pose (step 2); ok = false where the axis is
 // too near the horizontal.
@@ -121,7 +121,7 @@ FaceContact locateFaceContact(const Cutter& cutter, const PoseCurve& curve, doub
   const double rb = cutter.bottomRadius();
   if (!(rb > 0)) return out;
   double t = 0.5;
-  for (int step = 0; step < kMaxSteps; ++step) {
+  for (int step = 0; step < kFaceNewtonSteps; ++step) {
     const PoseFrame f = curve.frame(t);
     const FaceHeight h = faceHeight(f, x, y);
     if (!h.ok) return out;
@@ -133,7 +133,7 @@ FaceContact locateFaceContact(const Cutter& cutter, const PoseCurve& curve, doub
       const double next = h.ddz > 0 ? t - h.dz / h.ddz : (h.dz > 0 ? 0.0 : 1.0);
       dt = std::clamp(next, 0.0, 1.0) - t;
     }
-    if (atEnd || -0.5 * h.dz * dt <= kDecrementDone) {
+    if (atEnd || -0.5 * h.dz * dt <= kFaceDecrementDone) {
       // Step 2's check that the crossing is a point of K(t) (in the bottom disc), then
       // step 3's proof.
       const Vec3 p = Vec3{x, y, h.z} - f.tip;

@@ -36,6 +36,11 @@
 //      (1/m)-Lipschitz among points at distance >= m (here m = r, by step 2), so over
 //      the whole range n.d <= n0.z + (2 V / r + omega) |tau| (a factor 2 to spare),
 //      checked once. Then the ray misses K'(t), hence K(t): f(t) > Q.z.
+// A disc of rays. Every downward ray from a point Q' within rho of Q is, seen from the
+// cutter, gamma + w with |w| <= rho. With margin rho added to step 2's need
+// (dist(gamma, C) > r + rho, so dist(gamma + w, C) > r) and rho / r to step 3's bound
+// (n moves by at most rho / r between the two, by the same Lipschitz constant), each
+// of those rays misses K(t) as the argument above has it for one.
 // A flat cutter (r = 0) has no such m near its rim, so it is never cleared here.
 // Round-off: every inequality keeps a slack of 1e-12 (1 + D + L) mm, far below the
 // 1e-9 mm proof gap the callers leave.
@@ -102,10 +107,10 @@ struct CoreDistance {
 // Step 2 along one side: the tangent line ell(tau) = p + tau v, tau in [0, T], proven
 // outside K' (dist(gamma, C) > r) rung by rung.
 bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T, double E,
-                double slack) {
+                double slack, double margin) {
   if (!(T > 0)) return true;
-  const double need = core.r + slack;  // dist(gamma, C) must exceed this
-  double u = 0, last = 0;              // the rung's start, the last rung's length
+  const double need = core.r + margin + slack;  // dist(gamma, C) must exceed this
+  double u = 0, last = 0;                       // the rung's start, the last rung's length
   for (int rung = 0; rung < kMaxRungs; ++rung) {
     Vec3 grad;
     const double hu = core.at(p + v * u, &grad);
@@ -143,7 +148,7 @@ bool sideClears(const CoreDistance& core, const Vec3& p, const Vec3& v, double T
 // ~10 for (their tangents only halve their distance to the minimum).
 // `at` is ell(0) as CoreDistance::at left it in step 3.
 bool curvatureClears(const CoreDistance& core, const AxialPoint& at, const Vec3& v, double left,
-                     double right, double E, double slack) {
+                     double right, double E, double slack, double margin) {
   const double T = std::max(left, right);
   const double sv = dot(v, core.a);
   const Vec3 vPerp = v - core.a * sv;
@@ -163,13 +168,13 @@ bool curvatureClears(const CoreDistance& core, const AxialPoint& at, const Vec3&
   if (!(m > E)) return false;
   const double k = m - E;
   const double tau = std::clamp(-h1 / k, -left, right);
-  return h0 + h1 * tau + 0.5 * k * tau * tau > core.r + slack * (1 + h0);
+  return h0 + h1 * tau + 0.5 * k * tau * tau > core.r + margin + slack * (1 + h0);
 }
 
 // The proof from the pose at the anchor (tip, axis, tip velocity and spin there).
 bool clearsFrom(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor,
                 const Vec3& tip, const Vec3& axis, const Vec3& vel, const Vec3& spin, double t0,
-                double t1, bool* insideAtAnchor) {
+                double t1, bool* insideAtAnchor, double margin = 0) {
   const double omega = curve.turnRate(), A = curve.tipAccelBound();
   const Vec3 g0 = q - tip;
   const Vec3 g1 = -vel - cross(spin, g0);  // gamma'(anchor)
@@ -185,14 +190,19 @@ bool clearsFrom(const Cutter& c, const PoseCurve& curve, const Vec3& q, double a
   // it leaves serves step 2's curvature bound.
   Vec3 n0;
   AxialPoint at;
-  if (!(core.at(g0, &n0, &at) > core.r + slack)) {
+  if (!(core.at(g0, &n0, &at) > core.r + margin + slack)) {
     if (insideAtAnchor) *insideAtAnchor = true;
     return false;
   }
-  if (!(n0.z + (2 * V / core.r + omega) * reach < 0)) return false;
+  if (!(n0.z + (2 * V / core.r + omega) * reach + margin / core.r < 0)) return false;
+  // Step 2 for a line far from the cutter (most of the moves a cell settles from their
+  // middle: the lines of other passes, 80 um or more above): gamma moves at most
+  // V |tau|, so the 1-Lipschitz distance stays above h0 - V reach.
+  if (at.h0 - V * reach > core.r + margin + slack) return true;
   // Step 2: the curvature bound in one go where it applies, else rungs on both sides.
-  if (curvatureClears(core, at, g1, left, right, E, slack)) return true;
-  return sideClears(core, g0, g1, right, E, slack) && sideClears(core, g0, -g1, left, E, slack);
+  if (curvatureClears(core, at, g1, left, right, E, slack, margin)) return true;
+  return sideClears(core, g0, g1, right, E, slack, margin) &&
+         sideClears(core, g0, -g1, left, E, slack, margin);
 }
 
 }  // namespace
@@ -203,6 +213,12 @@ bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, doubl
   if (!(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
   return clearsFrom(c, curve, q, anchor, curve.tip(anchor), curve.axis(anchor),
                     curve.tipVelocity(anchor), curve.spin(anchor), t0, t1, insideAtAnchor);
+}
+
+bool raysClearMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double radius) {
+  if (!(c.cornerRadius > 0) || !(radius >= 0)) return false;
+  return clearsFrom(c, curve, q, 0.5, curve.tip(0.5), curve.axis(0.5), curve.tipVelocity(0.5),
+                    curve.spin(0.5), 0, 1, nullptr, radius);
 }
 
 bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, const PoseFrame& anchor,

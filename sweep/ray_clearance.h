@@ -25,6 +25,10 @@ namespace scallop {
 // and corner (K' below) at the anchor itself: no other anchor can clear it either.
 bool rayClearsMove(const Cutter& cutter, const PoseCurve& curve, const Vec3& q, double anchor,
                    double t0, double t1, bool* insideAtAnchor = nullptr);
+// The same for every downward ray from a point within `radius` (mm) of q, all at once:
+// the rays of a block of cells below an upper bound of its heights (ray_clearance.cpp,
+// "A disc of rays").
+bool raysClearMove(const Cutter& cutter, const PoseCurve& curve, const Vec3& q, double radius);
 // The same from a pose already computed at the anchor (anchor.t).
 bool rayClearsMove(const Cutter& cutter, const PoseCurve& curve, const Vec3& q,
                    const PoseFrame& anchor, double t0, double t1, bool* insideAtAnchor = nullptr);

@@ -43,11 +43,11 @@ namespace scallop {
 
 namespace {
 
-constexpr int kMaxSteps = 12;
+constexpr int kRimNewtonSteps = 12;
 // mm: Newton's decrement (about how far g lies above its minimum) at which g is taken as
 // converged: 10 times below the proof gap, so the proof that follows has room to close;
 // a smaller one costs a step more for heights no more proven.
-constexpr double kDecrementDone = 1e-10;
+constexpr double kRimDecrementDone = 1e-10;
 
 // g and its first and second partial derivatives at (t, phi); ok = false where l misses
 // the ball round c (|D| >= r, to a margin).
@@ -157,7 +157,7 @@ RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double
   } else if (!ball) {
     startDirection(cutter, f, x, y, cs, sn);
   }
-  for (int step = 0; step < kMaxSteps; ++step) {
+  for (int step = 0; step < kRimNewtonSteps; ++step) {
     if (step > 0) curve.frame(t, f);
     const Local L = evaluate(cutter, f, x, y, cs, sn);
     if (!L.ok) return out;
@@ -181,7 +181,7 @@ RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double
     dt = std::clamp(t + dt, 0.0, 1.0) - t;
     // The Newton decrement -grad g . delta / 2 estimates how far g here lies above the
     // minimum (g is nearly quadratic this close): far below the 1e-9 mm proof gap, stop.
-    if (-0.5 * (L.gt * dt + L.gp * dp) <= kDecrementDone) {
+    if (-0.5 * (L.gt * dt + L.gp * dp) <= kRimDecrementDone) {
       // The point is in K(t) only below the flute top: s = r + (p - c).a <= L, which a
       // short flute (L < 2r) and a line running up the lean can break (K' has no top,
       // so the proof would not notice).

@@ -127,9 +127,11 @@ LowestPoint SweptMove::planeHint(double x, double y) const {
   return segment_ ? segment_->lowestPoint(x, y) : stationaryLowestPoint(0.5, x, y);
 }
 
-LowestPoint SweptMove::locatedPlaneHint(double x, double y) const {
+LowestPoint SweptMove::locatedPlaneHint(double x, double y, double tStart) const {
   if (segment_ || !(cutter_.cornerRadius > 0)) return planeHint(x, y);
-  const RimContact rim = locateRimContact(cutter_, curve_, x, y);
+  RimStart start;
+  start.t = tStart;
+  const RimContact rim = locateRimContact(cutter_, curve_, x, y, start);
   if (!rim.found) return planeHint(x, y);
   LowestPoint lp;
   lp.hit = true, lp.z = rim.z, lp.normal = rim.normal, lp.t = rim.t;
@@ -140,6 +142,10 @@ LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo
                                            double cutoffAnchor) const {
   if (segment_) return segment_->lowestPoint(x, y, memo, cutoff);
   return turningLowestPoint(x, y, cutoff, cutoffAnchor);
+}
+
+bool SweptMove::clearsAbove(double x, double y, double z, double radius) const {
+  return turning() && raysClearMove(cutter_, curve_, {x, y, z}, radius);
 }
 
 LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double cutoff,

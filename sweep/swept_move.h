@@ -48,6 +48,11 @@ class SweptMove {
   LowestPoint lowestPoint(double x, double y, SectionMemo* memo = nullptr, double cutoff = HUGE_VAL,
                           double cutoffAnchor = NAN) const;
 
+  // True only if the solid provably stays above z on every vertical line within
+  // `radius` mm of (x, y) (a turning move's ray clearance from its middle, for a disc of
+  // lines: ray_clearance.h); false proves nothing (and constant-axis moves always say so).
+  bool clearsAbove(double x, double y, double z, double radius) const;
+
   // The lowest point of the cutter standing at pose(t) alone: a convex function of
   // (x, y) (K(t) is convex) at or above the swept solid's heights.
   LowestPoint stationaryLowestPoint(double t, double x, double y) const;
@@ -59,9 +64,9 @@ class SweptMove {
   LowestPoint planeHint(double x, double y) const;
   // A closer one for the same use, for about a third of what an exact evaluation costs
   // at a fresh place (no knots, no proof): for a turning move, where the rim contact is
-  // located from the middle (rim_contact.h), its point and normal, unproven (a plane
-  // needs none); elsewhere planeHint().
-  LowestPoint locatedPlaneHint(double x, double y) const;
+  // located from pose tStart (rim_contact.h; the middle, or where a nearby line touched),
+  // its point and normal, unproven (a plane needs none); elsewhere planeHint().
+  LowestPoint locatedPlaneHint(double x, double y, double tStart = 0.5) const;
 
   // An upper bound of the swept solid's support function max over the solid of
   // dot(dir, p) (exact for a constant axis). For dir.z < 0 the plane dot(dir, p) =

@@ -10,6 +10,7 @@
 // where their bottom faces hover above a cell cut by another move's corner.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "sweep/pose_curve.h"
@@ -21,8 +22,10 @@ namespace scallop {
 // (any t in [0, 1]) has a point on the vertical line at or below the lower of the two.
 struct TipPlaneBound {
   double a[2] = {-HUGE_VAL, -HUGE_VAL}, b[2] = {0, 0}, c[2] = {0, 0};
+  // (No NaN arises: a is finite or -inf, b and c finite. std::min, unlike std::fmin, is
+  // inlined: the branch and bound asks this for most candidates of every cell.)
   double at(double x, double y) const {
-    return std::fmin(a[0] + b[0] * x + c[0] * y, a[1] + b[1] * x + c[1] * y);
+    return std::min(a[0] + b[0] * x + c[0] * y, a[1] + b[1] * x + c[1] * y);
   }
   // Its minimum over a rectangle inside the one it was made for.
   double minOver(double x0, double y0, double x1, double y1) const;

@@ -68,7 +68,7 @@ constexpr double kStepPeriods = 0.25;
 // make it so; past this budget such a search counts as unproven (unprovenSearches()).
 constexpr int kMaxSplits = 4096;
 
-std::atomic<unsigned long long> unprovenCount{0};
+std::atomic<unsigned long long> unprovenCrossingCount{0};
 
 double wrapAngle(double a) {  // to [-pi, pi] (the differences wrapped are below 4 pi)
   while (a > kPi) a -= kTwoPi;
@@ -128,7 +128,7 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
 }
 
 unsigned long long ToothSweep::unprovenSearches() {
-  return unprovenCount.load();
+  return unprovenCrossingCount.load();
 }
 
 void ToothSweep::frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const {
@@ -478,7 +478,7 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
       prev = next;
     }
   }
-  if (best.unproven) unprovenCount.fetch_add(1, std::memory_order_relaxed);
+  if (best.unproven) unprovenCrossingCount.fetch_add(1, std::memory_order_relaxed);
   if (!(best.z < cutoff)) return miss;
   LowestPoint out;
   out.hit = true;

@@ -101,10 +101,8 @@ TEST(StampCaster, ResultDoesNotDependOnThreads) {
   StampOptions options;
   options.tileCells = 8;  // several tiles, so both threads take some
   StampSimulationResult one, two;
-  tbb::task_arena(1).execute(
-      [&] { one = simulateStamped(cutter, path, stock, grid, options); });
-  tbb::task_arena(2).execute(
-      [&] { two = simulateStamped(cutter, path, stock, grid, options); });
+  tbb::task_arena(1).execute([&] { one = simulateStamped(cutter, path, stock, grid, options); });
+  tbb::task_arena(2).execute([&] { two = simulateStamped(cutter, path, stock, grid, options); });
   EXPECT_EQ(heightsHash(one.map), heightsHash(two.map));
   EXPECT_EQ(one.stamp.exactEvaluations, two.stamp.exactEvaluations);
 }

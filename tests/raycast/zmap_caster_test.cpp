@@ -74,12 +74,14 @@ Fixture turningFixture() {
   return f;
 }
 
-ZMap cast(const Fixture& f, double spacing, int64_t regionCells, int threads) {
+ZMap cast(const Fixture& f, double spacing, int64_t regionCells, int threads,
+          int64_t tileCells = 0) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   const GridSpec grid =
       gridCovering(f.stock.min.x, f.stock.min.y, f.stock.max.x, f.stock.max.y, spacing);
   SimulationOptions options;
   options.cast.regionCells = regionCells;
+  options.cast.tileCells = tileCells;
   return simulate(f.cutter, f.path, f.stock, grid, options).map;
 }
 
@@ -99,6 +101,15 @@ TEST(ZMapCaster, RegionQueriesEqualCellByCellBitForBit) {
 TEST(ZMapCaster, ThreadCountDoesNotChangeABit) {
   for (const Fixture& f : {freeformFixture(), turningFixture()})
     EXPECT_EQ(cast(f, 0.011, 16, 1).heights(), cast(f, 0.011, 16, 2).heights());
+}
+
+// The work items' size (128 cells on large grids, 64 on small ones) decides only where
+// regions start and which winner they carry.
+TEST(ZMapCaster, TileSizeDoesNotChangeABit) {
+  const Fixture f = turningFixture();
+  const ZMap reference = cast(f, 0.009, 0, 2, 64);
+  for (int64_t tile : {128, 37})
+    EXPECT_EQ(cast(f, 0.009, 0, 2, tile).heights(), reference.heights()) << "tile " << tile;
 }
 
 // Bands of rows cast from one scene (a map too large to hold, --tiled) are the whole

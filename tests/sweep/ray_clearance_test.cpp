@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "sweep/brute_force_reference.h"
 #include "sweep/constants.h"
@@ -167,6 +169,86 @@ TEST(RayClearance, ClearsHeightsJustBelowTheLowestPointOfCamLikeMoves) {
   EXPECT_GE(atMinimum, lines * 8 / 10);
   EXPECT_GE(fromMiddle, lines * 8 / 10);
   EXPECT_EQ(flatCleared, 0);
+}
+
+// The lines of a disc: its centre, 12 on its rim and 12 inside.
+std::vector<std::pair<double, double>> discLines(std::mt19937_64& rng, double x, double y,
+                                                 double radius) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::pair<double, double>> lines{{x, y}};
+  for (int k = 0; k < 12; ++k) {
+    const double a = 2 * kPi * k / 12;
+    lines.push_back({x + radius * std::cos(a), y + radius * std::sin(a)});
+    const double b = 2 * kPi * u(rng), rr = radius * std::sqrt(u(rng));
+    lines.push_back({x + rr * std::cos(b), y + rr * std::sin(b)});
+  }
+  return lines;
+}
+
+// The lowest point, over the lines of a disc (discLines), of the reference's minima on
+// each (HUGE_VAL where no line meets the solid).
+double lowestOnDisc(std::mt19937_64& rng, const Move& m, double x, double y, double radius) {
+  double lowest = HUGE_VAL;
+  for (const auto& [lx, ly] : discLines(rng, x, y, radius)) {
+    const RefMinimum ref = referenceMinimum(m, lx, ly);
+    if (ref.hit) lowest = std::min(lowest, ref.z);
+  }
+  return lowest;
+}
+
+// Soundness of the disc (what a block of cells asks, raysClearMove): a height at or
+// above the lowest point of any line of the disc is never cleared, on every kind of
+// move and for discs of 1 um to 0.2 mm.
+TEST(RayClearance, DiscNeverClearsAHeightAtOrAboveTheLowestPointOfItsLines) {
+  std::mt19937_64 rng(2718);
+  int checks = 0, discs = 0;
+  for (int k = 0; k < 360; ++k) {
+    const Family family = k % 3 == 0 ? Family::CamLike : k % 3 == 1 ? Family::Turning : Family::Any;
+    const Move m = randomMove(rng, k, family);
+    const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
+    double x, y;
+    randomLine(rng, m, x, y);
+    const double radius = k % 3 == 0 ? 1e-3 : k % 3 == 1 ? 0.02 : 0.2;
+    const double lowest = lowestOnDisc(rng, m, x, y, radius);
+    if (!(lowest < HUGE_VAL)) continue;
+    ++discs;
+    for (double dz : {1e-8, 1e-6, 1e-3, 0.5, 50.0}) {
+      ++checks;
+      EXPECT_FALSE(raysClearMove(m.cutter, curve, {x, y, lowest + dz}, radius))
+          << "move " << k << " (" << toString(m.cutter.type) << ") disc (" << x << ", " << y
+          << ") radius " << radius << " cleared " << dz << " mm above the lowest point " << lowest
+          << " of one of its lines";
+    }
+  }
+  std::printf("RayClearance of discs: %d discs that meet the solid, %d checks\n", discs, checks);
+  EXPECT_GE(discs, 200);
+}
+
+// Usefulness of the disc, and its radius 0 is the single line's proof from the middle:
+// on CAM-like moves of ball and bull cutters, a disc of 20 um (a block of 16 cells of
+// 1.25 um) is cleared 0.1 mm below its lines' lowest point.
+TEST(RayClearance, DiscClearsHeightsWellBelowItsLinesOnCamLikeMoves) {
+  std::mt19937_64 rng(1618);
+  int discs = 0, cleared = 0, sameAsLine = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Move m = randomMove(rng, k, Family::CamLike);
+    if (m.cutter.type == CutterType::Flat) continue;
+    const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
+    double x, y;
+    randomLine(rng, m, x, y);
+    const double lowest = lowestOnDisc(rng, m, x, y, 0.02);
+    if (!(lowest < HUGE_VAL)) continue;
+    ++discs;
+    const Vec3 q{x, y, lowest - 0.1};
+    cleared += raysClearMove(m.cutter, curve, q, 0.02);
+    sameAsLine +=
+        raysClearMove(m.cutter, curve, q, 0) == rayClearsMove(m.cutter, curve, q, 0.5, 0, 1);
+  }
+  std::printf("RayClearance of 20 um discs 0.1 mm below on CAM-like moves: %d of %d\n", cleared,
+              discs);
+  ASSERT_GE(discs, 100);
+  EXPECT_GE(cleared, discs * 8 / 10);
+  EXPECT_EQ(sameAsLine, discs);
 }
 
 // The search's Newton step: lowestPointCurvature is f'' of the lowest point, checked

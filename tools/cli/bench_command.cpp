@@ -359,7 +359,7 @@ constexpr const char* kBenchHelp =
     "speed-up. The stamping baseline (classical z-map) runs on a\n"
     "small window of B1 and B3 with the largest step whose error is <= 1e-4 mm, and\n"
     "its time over the exact time on that window is reported as stamp_ratio.\n"
-    "Full size needs ~3.5 GB of memory; on 2 cores each case takes a few minutes (B3: 25-31 s\n"
+    "Full size needs ~3.5 GB of memory; on 2 cores each case takes a few minutes (B3: 21-26 s\n"
     "a run at 2 threads, and every case runs four times) but B5, whose teeth take about\n"
     "half an hour. --quick uses 10x coarser spacing (about a minute in all), --area a\n"
     "smaller square of each case (B4: at the relief's centre).";

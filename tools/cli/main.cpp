@@ -4,6 +4,10 @@
 // (tools/cli/interrupt.h).
 #include <tbb/global_control.h>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -29,6 +33,13 @@ constexpr const char* kDescription =
 
 int main(int argc, char** argv) {
   scallop::installInterruptHandler();  // Ctrl-C in a long loop then ends cleanly
+#if defined(__GLIBC__)
+  // Blocks of 4 MB and more (the z-map, the scene's arrays) are mapped and unmapped on
+  // their own. glibc would otherwise raise this threshold at the first large free, after
+  // which a freed scene stays resident in malloc's heaps through the next run: on the
+  // bench's four B3 runs, 36 MB more peak memory.
+  mallopt(M_MMAP_THRESHOLD, 4 << 20);
+#endif
   CLI::App app{kDescription, "scallop"};
   app.require_subcommand(1);
   scallop::CommonOptions common;
