@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 
 namespace scallop {
 

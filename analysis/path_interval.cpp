@@ -10,7 +10,7 @@
 #include <sstream>
 #include <utility>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 
 namespace scallop {
 namespace {

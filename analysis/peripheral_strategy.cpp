@@ -6,13 +6,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 
 namespace scallop {
 
-namespace {
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
-}
+namespace {}
 
 const char* toString(PostureClass c) {
   switch (c) {
@@ -35,7 +34,7 @@ const char* toString(InclinationAxis a) {
 Pose peripheralPose(const Vec3& cc, const Vec3& n, const Vec3& f, double alphaDeg,
                     InclinationAxis axis, const Cutter& cutter, double ccAxialPosition) {
   const Vec3 t = cross(f, n);  // §2.2: T = F x N
-  const double ca = std::cos(alphaDeg * kDegree), sa = std::sin(alphaDeg * kDegree);
+  const double ca = std::cos(alphaDeg * kRadPerDeg), sa = std::sin(alphaDeg * kRadPerDeg);
   Vec3 a, toCentre;  // tool axis, and the unit vector from the cc-point to the axis
   if (axis == InclinationAxis::Normal) {
     // Eq. (2) about Z_T (the normal through the cc-point): n x t = f.

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 
 namespace scallop {
 

@@ -12,7 +12,7 @@
 #include "raycast/swept_scene.h"
 #include "raycast/zmap.h"
 #include "raycast/zmap_caster.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "sweep/raster.h"
 #include "sweep/swept_move.h"
 

@@ -20,7 +20,7 @@
 #include <sstream>
 #include <utility>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 
 namespace scallop {
 namespace {

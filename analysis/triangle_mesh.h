@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

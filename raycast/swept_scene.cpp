@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "base/constants.h"
 #include "raycast/scene_tiles.h"
 #include "raycast/tile_grid.h"
 
@@ -160,7 +161,7 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
     double footprint[kDirs];
     Vec3 dirs[kDirs];
     for (int i = 0; i < kDirs; ++i) {
-      const double a = 2 * 3.14159265358979323846 * i / kDirs;
+      const double a = 2 * kPi * i / kDirs;
       dirs[i] = {std::cos(a), std::sin(a), 0};
       footprint[i] = seg.support(dirs[i]);
     }

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 
 namespace scallop {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sweep/cutter.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 
 namespace scallop {
 
@@ -102,7 +103,7 @@ PoseCurve PoseCurve::linear(const Pose& from, const Pose& to, const char* where)
   c.u_ = a0;
   c.a1_ = a1;
   const double phi = turnAngle(a0, a1);
-  if (phi > 3.14159265358979323846 - 1e-9)
+  if (phi > kPi - 1e-9)
     throw InputError(where, "the axis turns by 180 degrees; the rotation is undefined");
   if (phi <= kNoTurn) {
     c.a1_ = a0;  // one axis for the whole move

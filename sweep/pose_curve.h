@@ -34,7 +34,7 @@
 #pragma once
 
 #include "sweep/pose.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

@@ -4,14 +4,13 @@
 #include <cmath>
 #include <string>
 
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "sweep/swept_segment.h"
 
 namespace scallop {
 
 namespace {
-
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 
 void requireAngle(double deg, const std::string& field) {
   if (!std::isfinite(deg) || std::fabs(deg) >= 90)
@@ -23,7 +22,7 @@ void requireAngle(double deg, const std::string& field) {
 
 Vec3 leadTiltAxis(const Vec3& feed, double leadDeg, double tiltDeg) {
   const Vec3 c = cross(Vec3{0, 0, 1}, feed);
-  return normalize(feed * std::tan(leadDeg * kDegToRad) + c * std::tan(tiltDeg * kDegToRad) +
+  return normalize(feed * std::tan(leadDeg * kRadPerDeg) + c * std::tan(tiltDeg * kRadPerDeg) +
                    Vec3{0, 0, 1});
 }
 

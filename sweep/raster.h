@@ -4,7 +4,7 @@
 
 #include "sweep/cutter.h"
 #include "sweep/pose.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

@@ -13,7 +13,7 @@
 
 #include "sweep/cutter.h"
 #include "sweep/pose_curve.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

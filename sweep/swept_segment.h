@@ -8,7 +8,7 @@
 #include <array>
 
 #include "sweep/cutter.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

@@ -48,7 +48,7 @@
 #include <atomic>
 #include <cmath>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/ray_clearance.h"
 
 namespace scallop {

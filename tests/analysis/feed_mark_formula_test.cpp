@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 
 namespace scallop {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "analysis/seed_tables.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 
 namespace scallop {
 namespace {

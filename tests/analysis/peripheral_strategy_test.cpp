@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "analysis/test_surfaces.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 
 namespace scallop {
 namespace {

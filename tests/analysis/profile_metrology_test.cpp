@@ -11,8 +11,8 @@
 
 #include "analysis/sampled_field.h"
 #include "raycast/zmap.h"
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 
 namespace scallop {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "analysis/path_interval.h"
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 
 namespace scallop {
 namespace {

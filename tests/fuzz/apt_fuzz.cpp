@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tests/fuzz/fuzz_targets.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -26,7 +26,7 @@
 
 #include "raycast/simulation.h"
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/raster.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_sweep.h"

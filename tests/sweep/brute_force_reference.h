@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "sweep/cutter.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 namespace ref {

@@ -20,7 +20,7 @@
 #include <thread>
 #include <vector>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/pose_curve.h"
 #include "sweep/rim_contact.h"
 #include "sweep/swept_move.h"

@@ -11,9 +11,9 @@
 #include <string>
 
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/cutter.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_sweep.h"
 

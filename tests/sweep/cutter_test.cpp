@@ -13,7 +13,7 @@
 #include <string>
 
 #include "sweep/brute_force_reference.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "sweep/swept_segment.h"
 
 namespace scallop {

@@ -20,7 +20,7 @@
 #include <string>
 
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/machine_reference.h"
 #include "sweep/swept_move.h"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "sweep/pose.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

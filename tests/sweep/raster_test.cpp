@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "sweep/swept_segment.h"
 
 namespace scallop {

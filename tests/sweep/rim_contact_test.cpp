@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/contact_knots.h"
 #include "sweep/machine_reference.h"
 #include "sweep/pose_curve.h"

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "sweep/pose_curve.h"
 
 namespace scallop {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/cutter.h"
 
 namespace scallop {

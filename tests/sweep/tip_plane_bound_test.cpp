@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/cutter.h"
 #include "sweep/machine_reference.h"
 #include "sweep/pose_curve.h"

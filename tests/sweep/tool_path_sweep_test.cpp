@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 
 namespace scallop {
 namespace {

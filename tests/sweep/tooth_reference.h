@@ -35,7 +35,7 @@
 #pragma once
 
 #include "sweep/cutter.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 namespace ref {

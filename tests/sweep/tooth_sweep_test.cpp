@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <random>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_reference.h"
 

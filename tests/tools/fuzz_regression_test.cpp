@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tests/fuzz/fuzz_targets.h"
 
 namespace scallop {

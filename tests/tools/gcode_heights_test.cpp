@@ -13,7 +13,7 @@
 
 #include "raycast/simulation.h"
 #include "sweep/brute_force_reference.h"
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "tools/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "sweep/constants.h"
+#include "base/constants.h"
 #include "sweep/pose_curve.h"
 #include "sweep/tool_path_sweep.h"
 #include "tools/input_error_message.h"

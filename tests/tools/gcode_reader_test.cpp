@@ -7,7 +7,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/input_error_message.h"
 
 namespace scallop {

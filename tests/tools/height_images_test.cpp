@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "raycast/zmap.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/render/preview_png.h"
 

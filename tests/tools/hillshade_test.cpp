@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/render/hillshade_png.h"
 #include "tools/render/preview_png.h"
 #include "tools/render/relief_shading.h"

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 
 namespace scallop {
 

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tests/sanitizer.h"
 #include "tests/tools/cli_harness.h"
 #include "tools/io/job.h"

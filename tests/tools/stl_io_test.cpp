@@ -12,7 +12,7 @@
 #include <limits>
 #include <string>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 
 namespace scallop {
 namespace {

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tests/tools/cli_harness.h"
 #include "tools/input_error_message.h"
 #include "tools/io/gcode_reader.h"

@@ -11,7 +11,7 @@
 
 #include "cli_harness.h"
 #include "raycast/zmap.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/md5.h"
 #include "tools/io/x3p_writer.h"
 

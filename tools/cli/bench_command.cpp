@@ -19,7 +19,7 @@
 
 #include "raycast/simulation.h"
 #include "raycast/stamp_caster.h"
-#include "sweep/internal_error.h"
+#include "base/internal_error.h"
 #include "tools/cli/command.h"
 #include "tools/cli/progress.h"
 #include "tools/run/bench_cases.h"

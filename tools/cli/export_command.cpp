@@ -11,7 +11,7 @@
 
 #include "analysis/profile_metrology.h"
 #include "analysis/surface_metrology.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/file_names.h"
 #include "tools/io/height_export.h"

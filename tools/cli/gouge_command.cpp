@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/gouge_check.h"
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/height_images.h"

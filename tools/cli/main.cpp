@@ -15,7 +15,7 @@
 #include <new>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/cli/interrupt.h"
 

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/run/band_files.h"
 #include "tools/run/report.h"

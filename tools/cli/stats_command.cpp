@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/profile_metrology.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/height_export.h"
 #include "tools/run/stats_document.h"

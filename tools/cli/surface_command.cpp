@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/stl_io.h"
 

@@ -16,7 +16,7 @@
 #include "analysis/seed_tables.h"
 #include "analysis/simulated_interval.h"
 #include "analysis/tool_conditions.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/atomic_file.h"
 #include "tools/render/svg_plot.h"

@@ -8,7 +8,7 @@
 #include <istream>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 
 namespace scallop {
 

@@ -11,8 +11,8 @@
 #include <fstream>
 #include <system_error>
 
-#include "sweep/input_error.h"
-#include "sweep/internal_error.h"
+#include "base/input_error.h"
+#include "base/internal_error.h"
 
 namespace scallop {
 

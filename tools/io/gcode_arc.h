@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

@@ -5,7 +5,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {

@@ -19,7 +19,7 @@
 
 #include <functional>
 
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

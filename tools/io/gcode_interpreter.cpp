@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "sweep/pose_curve.h"
 #include "tools/io/gcode_arc.h"
 #include "tools/io/gcode_cycles.h"

@@ -11,7 +11,8 @@
 #include <fstream>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
+#include "base/version.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/file_names.h"
 #include "tools/io/height_images.h"
@@ -57,7 +58,7 @@ void writeHeights16(const ZMap& map, const std::string& path) {
   spec.attribute("scallop:origin_x", fmt::format("{}", g.originX));
   spec.attribute("scallop:origin_y", fmt::format("{}", g.originY));
   spec.attribute("scallop:spacing_mm", fmt::format("{}", g.spacing));
-  spec.attribute("Software", "scallop 0.1.0");
+  spec.attribute("Software", std::string("scallop ") + kScallopVersion);
   writeFileAtomically(path, [&](const std::string& temp) {
     auto out = OIIO::ImageOutput::create(format);
     if (!out) throw InputError(path, std::string("image writer unavailable: ") + OIIO::geterror());

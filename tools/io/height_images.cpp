@@ -16,8 +16,9 @@
 #include <memory>
 #include <vector>
 
-#include "sweep/input_error.h"
-#include "sweep/internal_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
+#include "base/internal_error.h"
 #include "tools/io/atomic_file.h"
 
 namespace scallop {
@@ -126,8 +127,6 @@ double metresPerUnit(const std::string& path, const std::string& key, const std:
   throw InputError(path,
                    fmt::format("header field {} = '{}': expected m, mm, um or nm", key, unit));
 }
-
-constexpr double kMetrePerMm = 1e-3;
 
 // A height map has a height in every cell: NaN (Gwyddion's masked points) or inf is
 // refused rather than let into the statistics.

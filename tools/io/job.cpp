@@ -10,8 +10,8 @@
 #include <sstream>
 #include <vector>
 
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "tools/io/gcode_block.h"
 #include "tools/io/job_cutters.h"
 #include "tools/io/job_fields.h"

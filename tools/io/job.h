@@ -17,7 +17,7 @@
 #include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/raster.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/job_fields.h"
 
 namespace scallop {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 
 namespace scallop::jobfield {
 

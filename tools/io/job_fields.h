@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop::jobfield {
 

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 
 namespace scallop {

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "sweep/swept_segment.h"
 #include "tools/io/apt_reader.h"
 #include "tools/io/file_names.h"

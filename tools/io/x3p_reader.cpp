@@ -9,7 +9,7 @@
 #include <cstring>
 #include <memory>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/md5.h"
 
 namespace scallop {

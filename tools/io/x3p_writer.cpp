@@ -9,15 +9,15 @@
 #include <ctime>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
+#include "base/version.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/md5.h"
 
 namespace scallop {
 
 namespace {
-
-constexpr double kMetrePerMm = 1e-3;
 
 std::string xmlEscape(const std::string& text) {
   std::string out;
@@ -125,12 +125,12 @@ std::string x3pMainXml(const ZMap& map, const std::string& dataMd5, const std::s
   </Record1>
   <Record2>
     <Date>{0}</Date>
-    <Creator>scallop 0.1.0</Creator>
+    <Creator>scallop {5}</Creator>
     <Instrument>
       <Manufacturer>scallop</Manufacturer>
       <Model>exact swept-solid simulation</Model>
       <Serial>none</Serial>
-      <Version>0.1.0</Version>
+      <Version>{5}</Version>
     </Instrument>
     <CalibrationDate>{0}</CalibrationDate>
     <ProbingSystem>
@@ -155,7 +155,7 @@ std::string x3pMainXml(const ZMap& map, const std::string& dataMd5, const std::s
   </Record4>
 </p:ISO5436_2>
 )",
-                   date, xmlEscape(comment), g.nx, g.ny, dataMd5);
+                   date, xmlEscape(comment), g.nx, g.ny, dataMd5, kScallopVersion);
   return x;
 }
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/python/height_arrays.h"
 #include "tools/python/json_convert.h"
 #include "tools/run/interval_comparison.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/file_names.h"
 #include "tools/io/height_export.h"
 #include "tools/io/height_images.h"

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 
 namespace scallop::python {
 

@@ -6,8 +6,8 @@
 // like tools/cli: it sits on scallop_run and nothing below includes it.
 #include <pybind11/pybind11.h>
 
-#include "sweep/input_error.h"
-#include "tools/io/version.h"
+#include "base/input_error.h"
+#include "base/version.h"
 #include "tools/python/analysis_bindings.h"
 #include "tools/python/height_arrays.h"
 #include "tools/python/simulate_binding.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/job.h"
 #include "tools/python/height_arrays.h"
 #include "tools/python/json_convert.h"

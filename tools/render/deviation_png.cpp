@@ -6,7 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "tools/render/png_canvas.h"
 
 namespace scallop {
@@ -117,7 +118,7 @@ double writeDeviationPng(const DesignComparison& c, const std::string& path,
     const int cx = mapX + int(gouge.i / k) * up + up / 2;
     const int cy = mapY + (h - 1 - int(gouge.j / k)) * up + up / 2;
     for (int deg = 0; deg < 360; deg += 10) {
-      const double a = deg * 3.14159265358979323846 / 180;
+      const double a = deg * kRadPerDeg;
       canvas.fill(cx + int(std::lround(6 * std::cos(a))), cy + int(std::lround(6 * std::sin(a))), 2,
                   2, png::kInk);
     }

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/render/png_canvas.h"
 #include "tools/render/preview_png.h"
 

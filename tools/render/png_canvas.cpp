@@ -11,7 +11,7 @@
 #include <mutex>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 
 namespace scallop::png {

@@ -11,7 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/render/height_colours.h"
 #include "tools/render/png_canvas.h"
@@ -91,7 +92,7 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
     if (std::isnan(boost)) boost = automaticTextureBoost(slope, texture, exaggeration);
     light = lambert(boosted(slope, texture, boost), exaggeration, options.light);
   }
-  const double flat = std::sin(options.light.elevationDeg * 3.14159265358979323846 / 180.0);
+  const double flat = std::sin(options.light.elevationDeg * kRadPerDeg);
   const double maxShade = kAmbient + (1 - kAmbient) / flat;
   const auto [cutLow, cutHigh] = robustRange(grid);
   const double zmin = std::isnan(options.zMin) ? cutLow : options.zMin;

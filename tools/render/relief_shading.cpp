@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 
 namespace scallop {
 
 namespace {
-
-constexpr double kDegree = 3.14159265358979323846 / 180.0;  // radians
 
 // x > 0 rounded to two significant digits (3.66 -> 3.7, 12.4 -> 12).
 double twoDigits(double x) {
@@ -69,7 +68,7 @@ double slopeQuantile(const Slopes& s, double q, double floor) {
 
 double automaticExaggeration(const Slopes& s) {
   const double typical = slopeQuantile(s, 0.75, 1e-9);  // below 1 nm per mm is round-off
-  return typical > 0 ? twoDigits(std::tan(35.0 * kDegree) / typical) : 1.0;
+  return typical > 0 ? twoDigits(std::tan(35.0 * kRadPerDeg) / typical) : 1.0;
 }
 
 Slopes textureSlopes(const HeightRaster& p, int radius) {
@@ -97,7 +96,7 @@ double automaticTextureBoost(const Slopes& all, const Slopes& texture, double ex
   const double form = slopeQuantile(all, 0.75, 1e-9);
   const double typical = form > 0 ? slopeQuantile(texture, 0.75, 0.01 * form) : 0.0;
   if (!(typical > 0)) return 1;
-  const double factor = twoDigits(std::tan(10.0 * kDegree) / typical);
+  const double factor = twoDigits(std::tan(10.0 * kRadPerDeg) / typical);
   const double boost = std::min(factor / exaggeration, 10.0);
   return boost >= 2 ? boost : 1.0;  // less would hardly show, and take a legend line
 }
@@ -112,7 +111,7 @@ Slopes boosted(const Slopes& all, const Slopes& texture, double boost) {
 }
 
 std::vector<double> lambert(const Slopes& s, double exaggeration, const Light& light) {
-  const double el = light.elevationDeg * kDegree, az = light.azimuthDeg * kDegree;
+  const double el = light.elevationDeg * kRadPerDeg, az = light.azimuthDeg * kRadPerDeg;
   const double lx = std::cos(el) * std::sin(az), ly = std::cos(el) * std::cos(az);
   const double lz = std::sin(el);
   std::vector<double> out(s.dzdx.size());

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 
 namespace scallop {

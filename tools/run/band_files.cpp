@@ -8,7 +8,7 @@
 #include <regex>
 #include <system_error>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/md5.h"
 

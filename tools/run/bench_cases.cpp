@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "sweep/constants.h"
-#include "sweep/input_error.h"
+#include "base/constants.h"
+#include "base/input_error.h"
 #include "sweep/raster.h"
 #include "sweep/swept_segment.h"
 #include "tools/io/tool_path_file.h"

@@ -11,7 +11,7 @@
 #include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/tool_path_sweep.h"
-#include "sweep/vec3.h"
+#include "base/vec3.h"
 
 namespace scallop {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/path_interval.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 
 namespace scallop {
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <sstream>
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "sweep/tool_path_sweep.h"
 #include "tools/io/stl_io.h"
 #include "tools/io/tool_path_file.h"

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "raycast/simulation.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/job.h"
 
 namespace scallop {

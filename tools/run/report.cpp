@@ -8,7 +8,7 @@
 
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
-#include "tools/io/version.h"
+#include "base/version.h"
 
 namespace scallop {
 

@@ -7,7 +7,7 @@
 
 #include "raycast/simulation.h"
 #include "raycast/stamp_caster.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/height_images.h"
 #include "tools/io/job.h"

@@ -1,6 +1,6 @@
 #include "tools/run/stats_document.h"
 
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/run/report.h"
 
 namespace scallop {

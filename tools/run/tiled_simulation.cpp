@@ -15,11 +15,11 @@
 #include <fstream>
 
 #include "raycast/simulation.h"
-#include "sweep/input_error.h"
+#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
 #include "tools/io/md5.h"
-#include "tools/io/version.h"
+#include "base/version.h"
 #include "tools/render/preview_png.h"
 #include "tools/run/band_files.h"
 #include "tools/run/feed_mark_report.h"

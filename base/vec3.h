@@ -57,6 +57,9 @@ struct Box3 {
   Vec3 min{HUGE_VAL, HUGE_VAL, HUGE_VAL};
   Vec3 max{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
 
+  Box3() = default;  // empty
+  Box3(const Vec3& min_, const Vec3& max_) : min(min_), max(max_) {}
+
   void extend(const Vec3& p) {
     min = {std::fmin(min.x, p.x), std::fmin(min.y, p.y), std::fmin(min.z, p.z)};
     max = {std::fmax(max.x, p.x), std::fmax(max.y, p.y), std::fmax(max.z, p.z)};
