@@ -6,7 +6,8 @@ PACKAGES="cmake ninja-build g++ ccache pkg-config \
   libembree-dev libtbb-dev libeigen3-dev libopenimageio-dev openimageio-tools \
   libcli11-dev nlohmann-json3-dev libfmt-dev libgtest-dev libbenchmark-dev \
   libzip-dev libfreetype-dev fonts-dejavu-core gwyddion xvfb xauth clang libclang-rt-14-dev \
-  slurm-wlm munge"
+  slurm-wlm munge valgrind"
+# valgrind: the performance guard (scripts/perf-guard.sh) counts instructions with callgrind.
 # The Python module (tools/python), its tests and examples/python.
 PACKAGES="$PACKAGES pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib"
 
