@@ -42,8 +42,8 @@ constexpr double kAmbient = 0.3;
 // The texture box's half side, raster cells: texture finer than 25 cells (a few
 // millimetres on screen) is what automaticTextureBoost may exaggerate further.
 constexpr int kTextureRadius = 12;
-// Cells that no move reached: a neutral grey, unshaded (the stock top is flat), that
-// no viridis colour comes near.
+// Cells that no move reached: a neutral grey, apart from viridis's saturated colours,
+// unshaded (the stock top is flat).
 constexpr Rgb kUncut{185, 185, 185};
 
 struct Tick {
