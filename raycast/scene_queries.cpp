@@ -156,8 +156,8 @@ void SweptScene::orderForBlock(const std::vector<Candidate>& candidates, double 
       bound = std::max(bound, planeBoundOver(impl_->tiles[cand.tile], x0, y0, x1, y1));
     bound -= planeSlack(bound);
     // Moves that cannot go below zTop anywhere in the block are no candidates of it. The
-    // planes of a turning move lie tens of um below it (docs/performance.md, seventh
-    // round), and most of those a cell would otherwise settle one by one (other passes'
+    // planes of a turning move lie tens of um below it (docs/performance-history.md,
+    // seventh round), and most of those a cell would otherwise settle one by one (other passes'
     // moves, 80 um or more above, or not over the cell at all) the block's ray clearance
     // settles at once.
     if (bound >= zTop || provenAboveOver(impl_->segments[cand.segment], x0, y0, x1, y1, zTop))

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "analysis/test_surfaces.h"
+#include "analysis/analytic_surfaces.h"
 #include "base/constants.h"
 
 namespace scallop {
@@ -54,7 +54,7 @@ TEST(PeripheralStrategy, FlatPlaneFromTheGenerator) {
   SurfaceSpec spec;
   spec.shape = SurfaceShape::Plane;
   spec.sizeX = 80, spec.sizeY = 60, spec.facets = 2000;
-  const TriangleMesh mesh = makeTestSurface(spec);
+  const TriangleMesh mesh = makeAnalyticSurface(spec);
   const MeshIndex index(mesh);
   const StrategyResult r =
       runPeripheralStrategy(index, Cutter::make(CutterType::Flat, 5, 0, 20), {});
@@ -75,7 +75,7 @@ TEST(PeripheralStrategy, TroughNarrowerThanTheCutterIsNonMachinable) {
   spec.shape = SurfaceShape::Trough;
   spec.sizeX = 60, spec.sizeY = 40, spec.facets = 2 * 240 * 160;  // 0.25 mm cells
   spec.troughRadius = 3, spec.height = 2;
-  const TriangleMesh mesh = makeTestSurface(spec);
+  const TriangleMesh mesh = makeAnalyticSurface(spec);
   const MeshIndex index(mesh);
   const double R = 5;
   const StrategyResult r =

@@ -3,7 +3,9 @@
 // t towards the light makes the angle 90 - el - t with it, so its Lambert term is
 // sin(el + t); turned away, sin(el - t); a plane of slope s under exaggeration e is
 // tilted by atan(e s). And the preview's texture boost: feed marks of 0.4 um beside
-// scallops of 94 um show in preview.png, and an envelope surface gets no boost.
+// scallops of 94 um show in preview.png, and an envelope surface gets no boost. And the
+// preview's colour range: the scallops', not the partly cut strip's at the map's edge
+// nor the uncut cells', which are grey.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "base/input_error.h"
+#include "tools/render/height_colours.h"
 #include "tools/render/hillshade_png.h"
 #include "tools/render/preview_png.h"
 #include "tools/render/relief_shading.h"
@@ -271,6 +274,58 @@ TEST_F(HillshadePicture, PreviewShowsFeedMarksBesideScallops) {
       << "an envelope surface's smooth curvature is not texture";
   const HeightRaster m = reduceMap(scallops(true), 1600);
   EXPECT_GT(automaticTextureBoost(slopes(m), textureSlopes(m, 12), exaggeration), 2);
+}
+
+// A ball R = 3 mm raster along x with step-over 0.5 mm (cusps 10.44 um high) over
+// 4 x 3 mm, floor at -0.5 mm; beyond its last pass (y = 2.5 mm) only the side of a
+// smaller ball (R = 0.6 mm) reached the stock, rising 268 um to the north edge, as the
+// bull's corner does in the default job. That strip is 17% of the map and rises to
+// 26 times the cusps' height.
+double scallopsWithEdgeStrip(double y) {
+  return -0.5 + (y > 2.5 ? arcs(y - 2.5, 10, 0.6) : arcs(y, 0.5, 3));
+}
+const double kCuspMm = -0.5 + 3 - std::sqrt(9 - 0.25 * 0.25);
+
+TEST_F(HillshadePicture, ColourRangeIgnoresThePartlyCutEdge) {
+  const ZMap map = mapOf(400, 300, 0.01, [](double, double y) { return scallopsWithEdgeStrip(y); });
+  const auto [low, high] = robustRange(reduceMap(map, 1600));
+  // The scallops take the whole colour bar: floor to cusps (cell centres miss the
+  // exact cusp by at most half a cell: 0.4 um). Percentiles alone (the range before
+  // the edge flanks were left out) put the top 28 um above the floor, the cusps at a
+  // third of the bar.
+  EXPECT_NEAR(low, -0.5, 5e-6);  // valley cells lie 0.005 mm off the pass: 4.2 nm up
+  EXPECT_LE(high, kCuspMm + 1e-9);
+  EXPECT_GE(high, kCuspMm - 0.5e-3);
+}
+
+TEST_F(HillshadePicture, UncutCellsAreGreyAndOutsideTheRange) {
+  // East of x = 3.5 mm no move reached the stock (top 0); between 3 and 3.5 mm a flank
+  // falls from it to the scallops.
+  auto z = [](double x, double y) {
+    const double cut = scallopsWithEdgeStrip(y);
+    return x > 3.5 ? 0.0 : x > 3 ? cut * (3.5 - x) / 0.5 : cut;
+  };
+  const ZMap map = mapOf(400, 300, 0.01, z);
+  const auto [low, high] = robustRange(reduceMap(map, 1600), 0.0);
+  EXPECT_NEAR(low, -0.5, 5e-6);  // valley cells lie 0.005 mm off the pass: 4.2 nm up
+  EXPECT_LE(high, kCuspMm + 1e-9);
+  EXPECT_GE(high, kCuspMm - 0.5e-3);
+
+  PreviewOptions o;
+  o.uncutHeight = 0;
+  writePreviewPng(map, file("uncut.png"), o);
+  writePreviewPng(map, file("untold.png"));
+  const Picture told = readPng(file("uncut.png")), untold = readPng(file("untold.png"));
+  ASSERT_GT(told.w, kMargin + 400);
+  // 400 x 300 cells, 1 px each, north up: column 380 is uncut, column 100 cut.
+  auto grey = [](const uint8_t* c) { return c[0] == 185 && c[1] == 185 && c[2] == 185; };
+  for (int row = kMargin; row < kMargin + 300; row += 10) {
+    EXPECT_TRUE(grey(told.at(kMargin + 380, row))) << row;
+    EXPECT_FALSE(grey(told.at(kMargin + 100, row))) << row;
+    EXPECT_FALSE(grey(untold.at(kMargin + 380, row))) << row;
+  }
+  // The legend names the grey: the picture with uncut cells is one line taller.
+  EXPECT_GT(told.h, untold.h);
 }
 
 }  // namespace

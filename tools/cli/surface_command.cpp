@@ -18,7 +18,7 @@ namespace scallop {
 int runSurface(SurfaceArgs args) {
   args.spec.shape = parseSurfaceShape(args.shape);
   if (args.output.empty()) throw InputError("-o", "an output STL file is required");
-  const TriangleMesh mesh = makeTestSurface(args.spec);
+  const TriangleMesh mesh = makeAnalyticSurface(args.spec);
   const std::string header =
       fmt::format("scallop surface {} {:g} x {:g} mm h={:g} mm", args.shape, args.spec.sizeX,
                   args.spec.sizeY, args.spec.heightOrDefault());

@@ -1,10 +1,10 @@
-// `scallop surface`: writes a faceted test surface (analysis/test_surfaces.h) as STL,
+// `scallop surface`: writes a faceted test surface (analysis/analytic_surfaces.h) as STL,
 // the stand-ins for seed 004's unpublished test models.
 #pragma once
 
 #include <string>
 
-#include "analysis/test_surfaces.h"
+#include "analysis/analytic_surfaces.h"
 
 namespace scallop {
 

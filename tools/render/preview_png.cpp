@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -43,6 +42,9 @@ constexpr double kAmbient = 0.3;
 // The texture box's half side, raster cells: texture finer than 25 cells (a few
 // millimetres on screen) is what automaticTextureBoost may exaggerate further.
 constexpr int kTextureRadius = 12;
+// Cells that no move reached: a neutral grey, apart from viridis's saturated colours,
+// unshaded (the stock top is flat).
+constexpr Rgb kUncut{185, 185, 185};
 
 struct Tick {
   double value;
@@ -94,7 +96,7 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   }
   const double flat = std::sin(options.light.elevationDeg * kRadPerDeg);
   const double maxShade = kAmbient + (1 - kAmbient) / flat;
-  const auto [cutLow, cutHigh] = robustRange(grid);
+  const auto [cutLow, cutHigh] = robustRange(grid, options.uncutHeight);
   const double zmin = std::isnan(options.zMin) ? cutLow : options.zMin;
   const double zmax = std::isnan(options.zMax) ? cutHigh : options.zMax;
   const double range = zmax - zmin;
@@ -118,11 +120,18 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   const std::vector<std::string> shading =
       reliefLegend(exaggeration, options.light, boost, (2 * kTextureRadius + 1) * grid.cellMm);
   const int shadingY = scaleY + textH + 14, lineH = textH + 10;
+  auto uncut = [&](double z) { return z >= options.uncutHeight; };  // false for NaN
+  const bool anyUncut = std::any_of(grid.z.begin(), grid.z.end(), uncut);
+  const std::string uncutLabel = "uncut: no move reached these cells";
+  const int uncutX = mapX + textH + 8;  // after a swatch of textH x textH
+  const int uncutY = shadingY + int(shading.size()) * lineH;
 
   int width = std::max({labelX + labelW + pad, pad + textWidth(title, s) + pad,
                         mapX + scaleBarWidth(scale, s) + pad});
   for (const std::string& line : shading) width = std::max(width, mapX + textWidth(line, s) + pad);
-  const int height = shadingY + int(shading.size()) * lineH - 10 + pad;
+  if (anyUncut) width = std::max(width, uncutX + textWidth(uncutLabel, s) + pad);
+  const int lines = int(shading.size()) + (anyUncut ? 1 : 0);
+  const int height = shadingY + lines * lineH - 10 + pad;
   Canvas canvas(width, height);
   canvas.fill(0, 0, width, height, kBackground);
   if (!title.empty()) canvas.text(pad, pad, title, s, kInk);
@@ -130,7 +139,12 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   // The map: each raster cell becomes an up x up square.
   for (int r = 0; r < grid.h; ++r)
     for (int a = 0; a < grid.w; ++a) {
-      const double t = range > 0 ? (grid.at(a, r) - zmin) / range : 0.5;
+      const double z = grid.at(a, r);
+      if (uncut(z)) {
+        canvas.fill(mapX + a * up, mapY + r * up, up, up, kUncut);
+        continue;
+      }
+      const double t = range > 0 ? (z - zmin) / range : 0.5;
       const double factor =
           kAmbient + (1 - kAmbient) * light[size_t(r) * size_t(grid.w) + size_t(a)] / flat;
       canvas.fill(mapX + a * up, mapY + r * up, up, up, shaded(viridis(t), factor, maxShade));
@@ -149,10 +163,15 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
     canvas.text(labelX, top, t.label, s, kInk);
   }
 
-  // Scale bar under the map, and what the shading exaggerates.
+  // Scale bar under the map, what the shading exaggerates, and the uncut cells' swatch.
   drawScaleBar(canvas, mapX, scaleY, scale, s);
   for (size_t k = 0; k < shading.size(); ++k)
     canvas.text(mapX, shadingY + int(k) * lineH, shading[k], s, kInk);
+  if (anyUncut) {
+    canvas.fill(mapX, uncutY, textH, textH, kUncut);
+    canvas.frame(mapX, uncutY, textH, textH, kFrame);
+    canvas.text(uncutX, uncutY, uncutLabel, s, kInk);
+  }
 
   writePng(canvas, path, options.title);
   return exaggeration;

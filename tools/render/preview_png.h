@@ -2,9 +2,9 @@
 // its height images (tools/io/height_images.h). 8-bit RGB: viridis colour map times
 // hill shading (tools/render/relief_shading.h; light from the north-west, heights
 // exaggerated so that scallops show, and the fine texture more so that feed marks
-// show beside them, the factors in the legend), a
-// colour bar with height ticks and a scale bar. North up, like the height images. Not
-// meant to be read back.
+// show beside them, the factors in the legend), a colour bar with height ticks and a
+// scale bar; cells that no move reached in grey, "uncut" in the legend. North up, like the height
+// images. Not meant to be read back.
 #pragma once
 
 #include <cmath>
@@ -25,8 +25,13 @@ struct PreviewOptions {
   int minPixels = 400;
   // Drawn above the map.
   std::string title;
+  // The height the map started at, mm (a simulation's stock top): cells still at it
+  // were reached by no move and are drawn grey, "uncut" in the legend, outside the
+  // colour range. NaN: none is told apart (a map read from a file).
+  double uncutHeight = NAN;
   // Colour-bar range, mm; NaN: robust percentiles of the cut region of the (reduced)
-  // map, see preview_png.cpp. The range comes from the picture's own cells, so a map
+  // map without the flanks that fall from its edge, see robustRange in
+  // tools/render/height_colours.h. The range comes from the picture's own cells, so a map
   // reduced before (a tiled run's min-pooled copy) gets the in-memory picture's range.
   double zMin = NAN, zMax = NAN;
   Light light;

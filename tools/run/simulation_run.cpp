@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "base/input_error.h"
 #include "raycast/simulation.h"
 #include "raycast/stamp_caster.h"
-#include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/height_images.h"
 #include "tools/io/job.h"
@@ -104,7 +104,8 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
   writeHeightsExr(map, (dir / "heights.exr").string());
   writeHeightsGsf(map, (dir / "heights.gsf").string(), title);
   PreviewOptions preview;
-  preview.title = title;
+  preview.title = previewTitle(title);
+  preview.uncutHeight = job.stock.max.z;  // the map's initial height (raycast/simulation.h)
   writePreviewPng(map, (dir / "preview.png").string(), preview);
 
   RunRecord run = inMemoryRecord(job, settings, h);
@@ -135,6 +136,14 @@ void checkRunnable(const Job& job, bool exact, bool banded) {
 std::string simulationTitle(const Job& job) {
   return "scallop " + std::string(toString(job.cutter.type)) +
          " R=" + fmt::format("{:g}", job.cutter.radius) + " MM";
+}
+
+std::string previewTitle(const std::string& simulationTitle) {
+  const std::string upper = " MM";
+  const size_t n = simulationTitle.size();
+  if (n < upper.size() || simulationTitle.compare(n - upper.size(), upper.size(), upper) != 0)
+    return simulationTitle;
+  return simulationTitle.substr(0, n - upper.size()) + " mm";
 }
 
 RunOutcome runSimulation(const Job& job, const RunSettings& settings) {

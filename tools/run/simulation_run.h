@@ -58,7 +58,11 @@ struct ComputedSimulation {
 // scene does not fit in memory.
 ComputedSimulation computeSimulation(const Job& job, const RunSettings& settings);
 
-// The title of a run's height images, e.g. "scallop bull R=3 MM".
+// The title of a run's height images, e.g. "scallop bull R=3 MM". The capitals date
+// from the first preview's bitmap font, which had no lower case; heights.gsf and the
+// band files keep that spelling, since scripts/example-heights.md5 pins the GSF's bytes.
 std::string simulationTitle(const Job& job);
+// preview.png's caption: a simulationTitle with its unit spelt "mm".
+std::string previewTitle(const std::string& simulationTitle);
 
 }  // namespace scallop

@@ -14,12 +14,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "raycast/simulation.h"
 #include "base/input_error.h"
+#include "base/version.h"
+#include "raycast/simulation.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
 #include "tools/io/md5.h"
-#include "base/version.h"
 #include "tools/render/preview_png.h"
 #include "tools/run/band_files.h"
 #include "tools/run/feed_mark_report.h"
@@ -255,7 +255,8 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   const auto t0 = Clock::now();
   writer_.close();
   PreviewOptions preview;
-  preview.title = run_.at("title").get<std::string>();
+  preview.title = previewTitle(run_.at("title").get<std::string>());
+  preview.uncutHeight = run_.at("inputs").at("stock").at("max").at(2).get<double>();
   writePreviewPng(preview_, (fs::path(dir_) / "preview.png").string(), preview);
   writeSeconds_ += secondsSince(t0);
 

@@ -1,4 +1,4 @@
-// Test surfaces for seed 004's strategy. The seed's three models ("different
+// Analytic test surfaces for seed 004's strategy. The seed's three models ("different
 // combinations of convex, concave, and saddle", §2, Figure 1) were made in CAD software
 // and not published; these analytic height fields stand in for them, faceted on a
 // regular grid at a chosen density:
@@ -40,6 +40,6 @@ double surfaceHeight(const SurfaceSpec& spec, double x, double y);
 
 // Grid of nx x ny cells with nx / ny close to X / Y and 2 nx ny close to `facets`;
 // each cell is split along its (0,0)-(1,1) diagonal; normals point up.
-TriangleMesh makeTestSurface(const SurfaceSpec& spec);
+TriangleMesh makeAnalyticSurface(const SurfaceSpec& spec);
 
 }  // namespace scallop

@@ -1,4 +1,4 @@
-#include "analysis/test_surfaces.h"
+#include "analysis/analytic_surfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +65,7 @@ double surfaceHeight(const SurfaceSpec& spec, double x, double y) {
   return 0;
 }
 
-TriangleMesh makeTestSurface(const SurfaceSpec& spec) {
+TriangleMesh makeAnalyticSurface(const SurfaceSpec& spec) {
   // Lengths beyond 1 km (1e6 mm) are refused, as everywhere in scallop: at such scales
   // the mesh's float coordinates (STL) lose every micrometre.
   if (!(spec.sizeX > 0) || !(spec.sizeY > 0) || !(spec.sizeX <= 1e6) || !(spec.sizeY <= 1e6))
