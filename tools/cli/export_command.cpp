@@ -9,15 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "analysis/profile_metrology.h"
-#include "analysis/surface_metrology.h"
 #include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/file_names.h"
 #include "tools/io/height_export.h"
-#include "tools/io/height_images.h"
-#include "tools/io/x3p_writer.h"
-#include "tools/render/hillshade_png.h"
+#include "tools/run/map_export.h"
 
 namespace scallop {
 
@@ -36,19 +32,6 @@ struct ExportArgs {
   std::vector<std::string> hillshadeOnly;  // those of them given, for the usage check
 };
 
-// The cells of `region` as a map of their own (the same cell centres).
-ZMap cropped(const ZMap& map, const CellRegion& region) {
-  GridSpec g = map.grid();
-  g.offsetI += region.i0;
-  g.offsetJ += region.j0;
-  g.nx = region.i1 - region.i0;
-  g.ny = region.j1 - region.j0;
-  ZMap out(g, 0.0);
-  for (int64_t j = 0; j < g.ny; ++j)
-    for (int64_t i = 0; i < g.nx; ++i) out.at(i, j) = map.at(region.i0 + i, region.j0 + j);
-  return out;
-}
-
 int writeHillshade(const ExportArgs& args, const ZMap& map) {
   auto given = [&args](const char* name) {
     return std::find(args.hillshadeOnly.begin(), args.hillshadeOnly.end(), name) !=
@@ -64,14 +47,9 @@ int writeHillshade(const ExportArgs& args, const ZMap& map) {
   options.title = given("--title")
                       ? args.title
                       : "hill shade of " + std::filesystem::path(args.file).filename().string();
-  const CellRegion region = args.region.empty()
-                                ? wholeMap(map.grid())
-                                : regionOfRectangle(map.grid(), args.region[0], args.region[1],
-                                                    args.region[2], args.region[3], "--region");
-  const double e =
-      writeHillshadePng(args.region.empty() ? map : cropped(map, region), args.to, options, "--");
+  const HillshadeExport e = exportHillshade(map, args.region, options, args.to, "--region");
   std::fprintf(stderr, "scallop: wrote %s (%lld x %lld cells, heights x %g)\n", args.to.c_str(),
-               (long long)(region.i1 - region.i0), (long long)(region.j1 - region.j0), e);
+               (long long)e.cellsX, (long long)e.cellsY, e.exaggeration);
   return 0;
 }
 
@@ -101,27 +79,11 @@ int runExport(const ExportArgs& args) {
   const ZMap map = readHeightFile(args.file);
   if (args.hillshade) return writeHillshade(args, map);
   const std::string title = "scallop height map from " + args.file;
-  if (ext == ".x3p") {
-    writeHeightsX3p(map, args.to, title);
-  } else if (ext == ".png" || ext == ".tif" || ext == ".tiff") {
-    writeHeights16(map, args.to);
-  } else if (ext == ".gsf") {
-    writeHeightsGsf(map, args.to, title);
-  } else if (ext == ".exr") {
-    writeHeightsExr(map, args.to);
-  } else {
-    const Profile p = extractProfile(map, args.profile[0], args.profile[1], args.profile[2],
-                                     args.profile[3], args.stepMm, "--profile");
-    // The roughness column is filled when the profile is long enough for the cutoff.
-    const double needMm = 3 * args.cutoffMm;
-    const double lengthMm = double(p.height.size() - 1) * p.stepMm;
-    if (lengthMm >= needMm) {
-      const RoughnessStats r = roughness(p, args.cutoffMm, "--cutoff");
-      writeProfileCsv(p, &r, args.to);
-    } else {
-      writeProfileCsv(p, nullptr, args.to);
-    }
-  }
+  if (ext == ".csv")
+    exportProfileCsv(map, args.profile, args.stepMm, args.cutoffMm, args.to, "--profile",
+                     "--cutoff");
+  else
+    exportHeightMap(map, args.to, title);
   std::fprintf(stderr, "scallop: wrote %s\n", args.to.c_str());
   return 0;
 }

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/profile_metrology.h"
 #include "base/input_error.h"
 #include "tools/cli/command.h"
 #include "tools/io/height_export.h"
+#include "tools/run/profile_roughness.h"
 #include "tools/run/stats_document.h"
 
 namespace scallop {
@@ -29,24 +29,6 @@ struct StatsArgs {
   bool json = false;
 };
 
-json roughnessJson(const Profile& p, const RoughnessStats& r) {
-  return {{"line_mm", {p.x0, p.y0, p.x1, p.y1}},
-          {"step_mm", p.stepMm},
-          {"samples", p.height.size()},
-          {"cutoff_mm", r.cutoffMm},
-          {"sampling_lengths", r.samplingLengths},
-          {"evaluation_start_mm", r.evaluationStartMm},
-          {"evaluation_length_mm", r.evaluationLengthMm},
-          {"Ra_mm", r.ra},
-          {"Rq_mm", r.rq},
-          {"Rz_mm", r.rz},
-          {"Rt_mm", r.rt},
-          {"convention",
-           "ISO 16610-21 Gaussian mean line (cutoff lc, kernel truncated at +-lc, run-in and "
-           "run-out of lc each), up to 5 sampling lengths of lc (ISO 4288), Rz = mean of the "
-           "sampling lengths' peak-to-valley; no lambda-s filter"}};
-}
-
 int runStats(const StatsArgs& args) {
   const ZMap map = readHeightFile(args.file);
   const GridSpec& g = map.grid();
@@ -54,14 +36,11 @@ int runStats(const StatsArgs& args) {
   SurfaceStats s;
   json doc = surfaceStatsDocument(map, region, parseLevelling(args.level, "--level"), &s);
   doc["file"] = args.file;
-  std::unique_ptr<Profile> profile;
-  RoughnessStats rough;
+  std::unique_ptr<ProfileRoughness> profile;
   if (!args.profile.empty()) {
-    profile = std::make_unique<Profile>(extractProfile(map, args.profile[0], args.profile[1],
-                                                       args.profile[2], args.profile[3],
-                                                       args.stepMm, "--profile"));
-    rough = roughness(*profile, args.cutoffMm, "--cutoff");
-    doc["profile"] = roughnessJson(*profile, rough);
+    profile = std::make_unique<ProfileRoughness>(
+        profileRoughness(map, args.profile, args.stepMm, args.cutoffMm, "--profile", "--cutoff"));
+    doc["profile"] = profileRoughnessDocument(*profile);
   }
   if (args.json) {
     std::printf("%s\n", doc.dump(2).c_str());
@@ -79,12 +58,15 @@ int runStats(const StatsArgs& args) {
       "3 for a Gaussian surface; Gwyddion shows Sku - 3)\n  Sp  = %.6g mm\n"
       "  Sv  = %.6g mm\n  Sz  = %.6g mm\n",
       s.sa, s.sq, s.ssk, s.sku, s.sp, s.sv, s.sz);
-  if (profile)
+  if (profile) {
+    const Profile& l = profile->profile;
+    const RoughnessStats& rough = profile->roughness;
     std::printf(
         "profile (%g, %g) -> (%g, %g) mm, cutoff %g mm, %d sampling lengths:\n"
         "  Ra = %.6g mm\n  Rq = %.6g mm\n  Rz = %.6g mm\n  Rt = %.6g mm\n",
-        profile->x0, profile->y0, profile->x1, profile->y1, rough.cutoffMm, rough.samplingLengths,
-        rough.ra, rough.rq, rough.rz, rough.rt);
+        l.x0, l.y0, l.x1, l.y1, rough.cutoffMm, rough.samplingLengths, rough.ra, rough.rq, rough.rz,
+        rough.rt);
+  }
   return 0;
 }
 

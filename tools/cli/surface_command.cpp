@@ -1,7 +1,5 @@
 #include "tools/cli/surface_command.h"
 
-#include <fmt/core.h>
-
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -11,36 +9,20 @@
 
 #include "base/input_error.h"
 #include "tools/cli/command.h"
-#include "tools/io/stl_io.h"
 
 namespace scallop {
 
 int runSurface(SurfaceArgs args) {
-  args.spec.shape = parseSurfaceShape(args.shape);
-  if (args.output.empty()) throw InputError("-o", "an output STL file is required");
-  const TriangleMesh mesh = makeAnalyticSurface(args.spec);
-  const std::string header =
-      fmt::format("scallop surface {} {:g} x {:g} mm h={:g} mm", args.shape, args.spec.sizeX,
-                  args.spec.sizeY, args.spec.heightOrDefault());
-  writeStl(mesh, args.output, args.ascii ? StlFormat::Ascii : StlFormat::Binary, header);
-  const Box3 box = mesh.bounds();
+  const nlohmann::json j = writeAnalyticSurface(args.settings);
   if (args.json) {
-    nlohmann::json j = {{"output", args.output},
-                        {"format", args.ascii ? "ascii" : "binary"},
-                        {"shape", args.shape},
-                        {"size_mm", {args.spec.sizeX, args.spec.sizeY}},
-                        {"height_mm", args.spec.heightOrDefault()},
-                        {"triangles", mesh.triangles.size()},
-                        {"vertices", mesh.vertices.size()},
-                        {"z_range_mm", {box.min.z, box.max.z}}};
-    if (args.spec.shape == SurfaceShape::Trough)
-      j["trough_radius_mm"] = args.spec.troughRadiusOrDefault();
     std::printf("%s\n", j.dump(2).c_str());
   } else {
     std::printf(
         "wrote %s: %s %g x %g mm, z in [%.6g, %.6g] mm, %zu triangles, %zu vertices (%s STL)\n",
-        args.output.c_str(), args.shape.c_str(), args.spec.sizeX, args.spec.sizeY, box.min.z,
-        box.max.z, mesh.triangles.size(), mesh.vertices.size(), args.ascii ? "ASCII" : "binary");
+        args.settings.output.c_str(), args.settings.shape.c_str(), args.settings.spec.sizeX,
+        args.settings.spec.sizeY, j["z_range_mm"][0].get<double>(),
+        j["z_range_mm"][1].get<double>(), j["triangles"].get<size_t>(), j["vertices"].get<size_t>(),
+        args.settings.ascii ? "ASCII" : "binary");
   }
   return 0;
 }
@@ -64,23 +46,25 @@ Command addSurfaceCommand(CLI::App& parent, CommonOptions&) {
   auto args = std::make_shared<SurfaceArgs>();
   auto size = std::make_shared<std::vector<double>>(std::vector<double>{100, 100});
   CLI::App* app = parent.add_subcommand("surface", kSurfaceHelp);
-  app->add_option("--shape", args->shape, "dome | bowl | saddle | wave | plane | trough")
+  app->add_option("--shape", args->settings.shape, "dome | bowl | saddle | wave | plane | trough")
       ->capture_default_str();
   app->add_option("--size", *size, "X Y: extent of the surface, mm")
       ->expected(2)
       ->capture_default_str();
-  app->add_option("--facets", args->spec.facets, "Approximate number of triangles (facet density)")
+  app->add_option("--facets", args->settings.spec.facets,
+                  "Approximate number of triangles (facet density)")
       ->capture_default_str();
-  app->add_option("--height", args->spec.height,
+  app->add_option("--height", args->settings.spec.height,
                   "Height h of the shape, mm (default 0.2 min(X, Y))");
-  app->add_option("--trough-radius", args->spec.troughRadius,
+  app->add_option("--trough-radius", args->settings.spec.troughRadius,
                   "Groove radius r of the trough, mm (default X/8)");
-  app->add_option("-o,--output", args->output, "Output STL file (written atomically)")->required();
-  app->add_flag("--ascii", args->ascii, "Write ASCII STL (default binary)");
+  app->add_option("-o,--output", args->settings.output, "Output STL file (written atomically)")
+      ->required();
+  app->add_flag("--ascii", args->settings.ascii, "Write ASCII STL (default binary)");
   app->add_flag("--json", args->json, "Print a JSON summary on stdout (and nothing else there)");
   return {app, [args, size]() {
-            args->spec.sizeX = (*size)[0];
-            args->spec.sizeY = (*size)[1];
+            args->settings.spec.sizeX = (*size)[0];
+            args->settings.spec.sizeY = (*size)[1];
             return runSurface(*args);
           }};
 }
