@@ -1,5 +1,5 @@
 #!/bin/sh
-# Builds the libFuzzer targets (tests/fuzz/*_fuzz.cpp) with clang, ASan and UBSan in
+# Builds the libFuzzer targets (one a seed folder tests/fuzz/corpus/NAME) with clang, ASan and UBSan in
 # build-fuzz and runs each for SECONDS (default 60). A crash, sanitizer report, hang
 # (> 10 s on one input) or blow-up (> 2 GB) stops that target, saves the input as
 # build-fuzz/findings/NAME-crash-..., and makes this script exit 1 after all have run.
@@ -15,7 +15,7 @@ build=build-fuzz
 CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSCALLOP_FUZZ=ON \
   -DSCALLOP_BUILD_TESTS=OFF >/dev/null
-names=${*:-$(cd tests/fuzz && ls *_fuzz.cpp | sed 's/_fuzz\.cpp$//')}
+names=${*:-$(cd tests/fuzz/corpus && ls -d -- */ | sed 's:/$::')}
 targets=""
 for n in $names; do targets="$targets ${n}_fuzz"; done
 # shellcheck disable=SC2086

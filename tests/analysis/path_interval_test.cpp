@@ -98,28 +98,26 @@ void expectNotApplicable(const ProcedureResult& r, const std::string& what) {
 
 // ---- Seed 000 Tables 2 and 3: L/2 from h --------------------------------------------------
 
-TEST(PathIntervalSeed000, Tables2And3_Sekine_Eqs4to8) {
+// A 2D procedure against its column of Tables 2 and 3 (c.halfInterval[column]).
+using HalfIntervalProcedure = ProcedureResult (*)(double, double, double, double);
+void expectTableColumn(HalfIntervalProcedure procedure, int column) {
   for (const Condition& c : kSeed000) {
-    ProcedureResult r = halfIntervalSekine(c.radius, c.cornerRadius, c.leadDeg, c.h);
+    ProcedureResult r = procedure(c.radius, c.cornerRadius, c.leadDeg, c.h);
     ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, c.halfInterval[1], kThreeDecimals) << label(c);
+    EXPECT_NEAR(r.value, c.halfInterval[column], kThreeDecimals) << label(c);
   }
+}
+
+TEST(PathIntervalSeed000, Tables2And3_Sekine_Eqs4to8) {
+  expectTableColumn(halfIntervalSekine, 1);
 }
 
 TEST(PathIntervalSeed000, Tables2And3_Redonnet_Eqs9And8) {
-  for (const Condition& c : kSeed000) {
-    ProcedureResult r = halfIntervalRedonnet(c.radius, c.cornerRadius, c.leadDeg, c.h);
-    ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, c.halfInterval[2], kThreeDecimals) << label(c);
-  }
+  expectTableColumn(halfIntervalRedonnet, 2);
 }
 
 TEST(PathIntervalSeed000, Tables2And3_Bedi_Eqs10And11) {
-  for (const Condition& c : kSeed000) {
-    ProcedureResult r = halfIntervalBedi(c.radius, c.cornerRadius, c.leadDeg, c.h);
-    ASSERT_TRUE(r.applicable) << r.reason;
-    EXPECT_NEAR(r.value, c.halfInterval[3], kThreeDecimals) << label(c);
-  }
+  expectTableColumn(halfIntervalBedi, 3);
 }
 
 // The computational row of Table 3, condition 3, and seed 001 Table 2, condition F2a

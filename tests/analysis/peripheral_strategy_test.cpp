@@ -19,15 +19,20 @@ void addQuad(std::vector<std::array<Vec3, 3>>& soup, Vec3 a, Vec3 b, Vec3 c, Vec
   soup.push_back({a, c, d});
 }
 
+// The plane z = slopeX x + slopeY y over nx x ny square cells of `cell` mm from the origin.
+TriangleMesh planeMesh(int nx, int ny, double cell, double slopeX, double slopeY) {
+  std::vector<std::array<Vec3, 3>> soup;
+  auto p = [&](double x, double y) { return Vec3{x, y, slopeX * x + slopeY * y}; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      addQuad(soup, p(cell * i, cell * j), p(cell * i + cell, cell * j),
+              p(cell * i + cell, cell * j + cell), p(cell * i, cell * j + cell));
+  return meshFromTriangles(soup);
+}
+
 TEST(PeripheralStrategy, TiltedPlaneIsMachinableWithoutGouge) {
   // z = 0.3 x + 0.2 y over 60 x 50 mm, 12 x 10 cells.
-  std::vector<std::array<Vec3, 3>> soup;
-  auto p = [](double x, double y) { return Vec3{x, y, 0.3 * x + 0.2 * y}; };
-  for (int j = 0; j < 10; ++j)
-    for (int i = 0; i < 12; ++i)
-      addQuad(soup, p(5 * i, 5 * j), p(5 * i + 5, 5 * j), p(5 * i + 5, 5 * j + 5),
-              p(5 * i, 5 * j + 5));
-  const TriangleMesh mesh = meshFromTriangles(soup);
+  const TriangleMesh mesh = planeMesh(12, 10, 5, 0.3, 0.2);
   const MeshIndex index(mesh);
   const Cutter cutter = Cutter::make(CutterType::Flat, 4, 0, 12);
   for (InclinationAxis axis : {InclinationAxis::Normal, InclinationAxis::Feed}) {
@@ -154,13 +159,7 @@ TEST(PeripheralStrategy, CreaseBetweenLargeFacetsGougesUnseenByTheVertexTest) {
 // plane z = 0 the flank's lowest line is at -delta exactly; on a tilted plane the
 // z-map (vertical) depth is delta / n_z.
 void expectOffsetDepth(double slopeX, double delta) {
-  std::vector<std::array<Vec3, 3>> soup;
-  auto p = [&](double x, double y) { return Vec3{x, y, slopeX * x}; };
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i)
-      addQuad(soup, p(10 * i, 10 * j), p(10 * i + 10, 10 * j), p(10 * i + 10, 10 * j + 10),
-              p(10 * i, 10 * j + 10));
-  const TriangleMesh mesh = meshFromTriangles(soup);
+  const TriangleMesh mesh = planeMesh(4, 4, 10, slopeX, 0);
   const MeshIndex index(mesh);
   const Cutter cutter = Cutter::make(CutterType::Flat, 3, 0, 10);
   StrategyOptions o;

@@ -9,10 +9,10 @@
 #include <cmath>
 #include <functional>
 
-#include "analysis/sampled_field.h"
-#include "raycast/zmap.h"
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "raycast/zmap.h"
+#include "tests/support/sampled_field.h"
 
 namespace scallop {
 namespace {

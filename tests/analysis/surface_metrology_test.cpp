@@ -15,10 +15,10 @@
 #include <random>
 #include <string>
 
-#include "analysis/sampled_field.h"
-#include "raycast/zmap.h"
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "raycast/zmap.h"
+#include "tests/support/sampled_field.h"
 #include "tools/io/height_images.h"
 
 namespace scallop {

@@ -84,23 +84,32 @@ void BM_CutterLowestPoint(benchmark::State& state) {
 }
 BENCHMARK(BM_CutterLowestPoint)->ArgsProduct({{0, 1, 2}, {0, 1}});
 
-// B1-like (one move per pass) and B2-like (0.05 mm moves) paths over a 4 x 4 mm stock.
-std::vector<SweptMove> benchSegments(const std::string& name, BenchCase& b) {
+// B1-like (one move per pass), B2-like (0.05 mm moves) and B3-like paths over a 4 x 4 mm
+// stock, by the benchmark's argument 1, 2 or 3: the case, its segments, the scene options.
+struct BenchScene {
+  const char* name;
+  BenchCase bench;
+  std::vector<SweptMove> segments;
+  SceneOptions options;
+};
+BenchScene benchScene(const benchmark::State& state) {
+  BenchScene s;
+  s.name = state.range(0) == 1 ? "B1" : state.range(0) == 2 ? "B2" : "B3";
   BenchCaseOptions options;
   options.quick = true;
   options.area = 4;
-  b = makeBenchCase(name, options);
-  return sweepToolPath(b.cutter, b.path);
+  s.bench = makeBenchCase(s.name, options);
+  s.segments = sweepToolPath(s.bench.cutter, s.bench.path);
+  s.options.stockTop = s.bench.stock.max.z;
+  return s;
 }
 
 void BM_SceneBuild(benchmark::State& state) {
-  const char* name = state.range(0) == 1 ? "B1" : state.range(0) == 2 ? "B2" : "B3";
-  BenchCase b;
-  const std::vector<SweptMove> segments = benchSegments(name, b);
-  SceneOptions options;
-  options.stockTop = b.stock.max.z;
+  const BenchScene s = benchScene(state);
+  const char* name = s.name;
+  const std::vector<SweptMove>& segments = s.segments;
   for (auto _ : state) {
-    const SweptScene scene(segments, options);
+    const SweptScene scene(segments, s.options);
     benchmark::DoNotOptimize(scene.stats().tiles);
   }
   state.SetItemsProcessed(state.iterations() * int64_t(segments.size()));
@@ -111,12 +120,10 @@ BENCHMARK(BM_SceneBuild)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
 // Casting only (the scene is built once): cells/s of the exact path, 10 um grid.
 void BM_Cast(benchmark::State& state) {
-  const char* name = state.range(0) == 1 ? "B1" : state.range(0) == 2 ? "B2" : "B3";
-  BenchCase b;
-  const std::vector<SweptMove> segments = benchSegments(name, b);
-  SceneOptions options;
-  options.stockTop = b.stock.max.z;
-  const SweptScene scene(segments, options);
+  const BenchScene s = benchScene(state);
+  const char* name = s.name;
+  const BenchCase& b = s.bench;
+  const SweptScene scene(s.segments, s.options);
   uint64_t evaluations = 0;
   for (auto _ : state) {
     ZMap map(b.grid, b.stock.max.z);

@@ -1,4 +1,4 @@
-// What each libFuzzer target (tests/fuzz/NAME_fuzz.cpp) feeds its bytes to, shared
+// What each libFuzzer target (NAME_fuzz, tests/fuzz/fuzz_driver.cpp) feeds its bytes to, shared
 // with tests/tools/fuzz_regression_test.cpp, which replays the seed corpus and every
 // saved finding (tests/fuzz/regressions/NAME/*) through the same functions in the
 // normal test suite.
@@ -89,14 +89,12 @@ inline void fuzzSimulateCl(const std::string& bytes) {
   // segments at 1e-4 mm, 5 s even without sanitizers: real work, not a hang).
   if (path.moves.size() > 16) return;
   static const Cutter cutter = Cutter::make(CutterType::Bull, 0.5, 0.2);
-  Box3 stock;
-  stock.extend({0, 0, -1});
-  stock.extend({1.5, 1.5, 0});
+  const Box3 stock({0, 0, -1}, {1.5, 1.5, 0});
   SimulationOptions options;
   simulate(cutter, path, stock, gridCovering(0, 0, 1.5, 1.5, 0.25), options);
 }
 
-// Target name (the NAME of NAME_fuzz.cpp and of its corpus folder) -> function.
+// Target name (the NAME of NAME_fuzz and of its corpus folder) -> function.
 inline const std::map<std::string, std::function<void(const std::string&)>>& targets() {
   static const std::map<std::string, std::function<void(const std::string&)>> all = {
       {"job", fuzzJob},

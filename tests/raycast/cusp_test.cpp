@@ -18,9 +18,7 @@ namespace {
 double simulatedCusp(const Cutter& cutter, double stepOver, double leadDeg, double targetSpacing) {
   const int half = std::max(1, int(std::lround(stepOver / (2 * targetSpacing) - 0.5)));
   const double spacing = stepOver / (2 * half + 1);  // L/2 = (half + 1/2) spacing
-  Box3 stock;
-  stock.extend({0, 0, -5});
-  stock.extend({4 * spacing, 2 * stepOver, 0});
+  const Box3 stock({0, 0, -5}, {4 * spacing, 2 * stepOver, 0});
   RasterSpec spec;
   spec.stepOver = stepOver;
   spec.depth = 1.0;
@@ -68,9 +66,7 @@ TEST(Cusp, BullWithLeadMatchesBruteForce) {
                         Case{3, 1, 5, 7, 2.0}}) {
     const Cutter bull = Cutter::make(CutterType::Bull, k.R, k.r);
     const double spacing = k.stepOver / 201;  // the midpoint between passes is a cell centre
-    Box3 stock;
-    stock.extend({0, 0, -5});
-    stock.extend({4 * spacing, 2 * k.stepOver, 0});
+    const Box3 stock({0, 0, -5}, {4 * spacing, 2 * k.stepOver, 0});
     RasterSpec spec;
     spec.stepOver = k.stepOver;
     spec.depth = 1.0;

@@ -45,9 +45,7 @@ TEST(SceneMemory, EstimateIsAtLeastWhatTheSceneTakes) {
 #endif
   const Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);
   const ToolPath path = turningPath(100);  // 40,000 turning moves
-  Box3 stock;
-  stock.extend({0, 0, -2});
-  stock.extend({20, 50, 1});
+  const Box3 stock({0, 0, -2}, {20, 50, 1});
   size_t moves = 0;
   const double estimate = estimateSceneBytes(cutter, path, stock.max.z, &moves);
   ASSERT_EQ(moves, 40000u);

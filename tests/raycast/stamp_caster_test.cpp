@@ -55,23 +55,24 @@ TEST(StampCaster, StepFollowsTheCurvatureOfTheLowerBoundary) {
               0.5 * 1e-4 / std::tan(5 * M_PI / 180), 1e-12);
 }
 
-TEST(StampCaster, BullRasterWithLeadWithinTolerance) {
-  const Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);
-  Box3 stock;
-  stock.extend({0, 0, -2});
-  stock.extend({1.0, 1.7, 0});
+// Bull R3 r1 passes 0.8 mm apart and 0.5 mm deep over `stock`, the axis led 5 degrees.
+const Cutter kBull = Cutter::make(CutterType::Bull, 3, 1);
+ToolPath bullLeadRaster(const Box3& stock) {
   RasterSpec spec;
   spec.stepOver = 0.8;
   spec.depth = 0.5;
   spec.leadDeg = 5;
-  expectStampedWithinTolerance(cutter, makeRaster(cutter, stock, spec), stock, 0.02);
+  return makeRaster(kBull, stock, spec);
+}
+
+TEST(StampCaster, BullRasterWithLeadWithinTolerance) {
+  const Box3 stock({0, 0, -2}, {1.0, 1.7, 0});
+  expectStampedWithinTolerance(kBull, bullLeadRaster(stock), stock, 0.02);
 }
 
 TEST(StampCaster, BallRasterCutIntoShortMovesWithinTolerance) {
   const Cutter cutter = Cutter::make(CutterType::Ball, 2);
-  Box3 stock;
-  stock.extend({0, 0, -2});
-  stock.extend({1.0, 1.0, 0});
+  const Box3 stock({0, 0, -2}, {1.0, 1.0, 0});
   RasterSpec spec;
   spec.stepOver = 0.5;
   spec.depth = 0.3;
@@ -82,21 +83,14 @@ TEST(StampCaster, BallRasterCutIntoShortMovesWithinTolerance) {
 
 TEST(StampCaster, FreeformFiveAxisWithinTolerance) {
   const Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);
-  Box3 stock;
-  stock.extend({2, 3, -2});
-  stock.extend({3, 4, 0.6});
+  const Box3 stock({2, 3, -2}, {3, 4, 0.6});
   expectStampedWithinTolerance(cutter, makeFreeformPath(cutter, stock, 0.5, 0.05, 5), stock, 0.02);
 }
 
 TEST(StampCaster, ResultDoesNotDependOnThreads) {
-  const Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);
-  Box3 stock;
-  stock.extend({0, 0, -2});
-  stock.extend({2, 2, 0});
-  RasterSpec spec;
-  spec.stepOver = 0.8;
-  spec.leadDeg = 5;
-  const ToolPath path = makeRaster(cutter, stock, spec);
+  const Cutter& cutter = kBull;
+  const Box3 stock({0, 0, -2}, {2, 2, 0});
+  const ToolPath path = bullLeadRaster(stock);
   const GridSpec grid = gridCovering(0, 0, 2, 2, 0.05);
   StampOptions options;
   options.tileCells = 8;  // several tiles, so both threads take some

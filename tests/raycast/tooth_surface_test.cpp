@@ -24,12 +24,13 @@
 #include <functional>
 #include <vector>
 
+#include "base/constants.h"
 #include "raycast/simulation.h"
 #include "sweep/brute_force_reference.h"
-#include "base/constants.h"
 #include "sweep/raster.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_sweep.h"
+#include "tests/support/band_check.h"
 
 namespace scallop {
 namespace {
@@ -361,8 +362,7 @@ struct RasterJob {
 
 RasterJob rasterJob() {
   RasterJob job;
-  job.stock.extend({0, 0, -1});
-  job.stock.extend({0.5, 0.3, 0});
+  job.stock = Box3({0, 0, -1}, {0.5, 0.3, 0});
   RasterSpec spec;
   spec.stepOver = 0.2;
   spec.depth = 0.05;
@@ -387,17 +387,9 @@ TEST(ToothSurface, ThreadsAndBandsChangeNoBit) {
   EXPECT_EQ(one.heights(), two.heights());
   EXPECT_LT(one.maxHeight(), job.stock.max.z - 0.01);  // cut everywhere
 
-  const GridSpec& grid = one.grid();
   const std::unique_ptr<SweptScene> scene =
-      buildScene(job.cutter, job.path, job.stock, grid.spacing, job.options);
-  for (int64_t j0 = 0; j0 < grid.ny; j0 += 7) {
-    const int64_t j1 = std::min(grid.ny, j0 + 7);
-    ZMap band(grid.rows(j0, j1), job.stock.max.z);
-    castZMap(*scene, band);
-    for (int64_t j = j0; j < j1; ++j)
-      for (int64_t i = 0; i < grid.nx; ++i)
-        ASSERT_EQ(band.at(i, j - j0), one.at(i, j)) << i << " " << j;
-  }
+      buildScene(job.cutter, job.path, job.stock, one.grid().spacing, job.options);
+  expectBandsEqualWhole(*scene, one, 7, job.stock.max.z);
 }
 
 TEST(ToothSurface, EveryCellIsTheLowestTeethHeightOfAllMoves) {

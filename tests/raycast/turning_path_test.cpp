@@ -88,9 +88,7 @@ TEST(TurningPath, FreeformWindowAtTwoMicronsMatchesTheBruteForce) {
   const ref::RefCutter refCutter = ref::makeRefCutter(CutterType::Bull, 3, 1);
   // The window [6.2, 6.3] x [3.1, 3.2] mm at 2 um, with the passes and CL points that
   // can reach it.
-  Box3 stock;
-  stock.extend({6.2, 3.1, -2});
-  stock.extend({6.3, 3.2, 0.6});
+  const Box3 stock({6.2, 3.1, -2}, {6.3, 3.2, 0.6});
   const ToolPath path = freeformClPath(2, 10.5, -0.5, 7);
   const GridSpec grid = gridCovering(6.2, 3.1, 6.3, 3.2, 0.002);
   const SimulationResult sim = simulate(cutter, path, stock, grid);

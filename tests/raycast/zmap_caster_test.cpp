@@ -10,6 +10,7 @@
 #include "sweep/contact_knots.h"
 #include "sweep/raster.h"
 #include "sweep/tool_path_sweep.h"
+#include "tests/support/band_check.h"
 
 namespace scallop {
 namespace {
@@ -17,14 +18,23 @@ namespace {
 // A raster with lead and tilt, and a curved 5-axis path of short moves whose axis turns.
 struct Fixture {
   Cutter cutter = Cutter::make(CutterType::Bull, 3, 1);
-  Box3 stock;
+  Box3 stock{{0, 0, -3}, {4, 3, 0}};
   ToolPath path;
 };
 
+// The fixtures' surface z = -0.5 + 0.2 sin x cos y, and the tool axis CAM holds over it:
+// the surface normal leaned 0.08 along +x.
+Vec3 surfaceTip(double x, double y) {
+  return {x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)};
+}
+Vec3 surfaceAxis(double x, double y) {
+  const Vec3 normal =
+      normalize(Vec3{-0.2 * std::cos(x) * std::cos(y), 0.2 * std::sin(x) * std::sin(y), 1});
+  return normalize(normal + Vec3{0.08, 0, 0});
+}
+
 Fixture rasterFixture() {
   Fixture f;
-  f.stock.extend({0, 0, -3});
-  f.stock.extend({4, 3, 0});
   RasterSpec spec;
   spec.stepOver = 1.1;
   spec.depth = 0.4;
@@ -37,20 +47,13 @@ Fixture rasterFixture() {
 
 Fixture freeformFixture() {
   Fixture f;
-  f.stock.extend({0, 0, -3});
-  f.stock.extend({4, 3, 0});
   // Each move holds the (leaned) surface normal of its midpoint as its axis, as a 5-axis
   // post-processor's linear moves do; the axis jumps between moves.
-  auto tipAt = [](double x, double y) {
-    return Vec3{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)};
-  };
   for (double y = -0.5; y <= 3.5; y += 0.9) {
     for (int k = 0; k < 60; ++k) {
-      const double xa = -3.5 + 0.18 * k, xb = xa + 0.18, xm = 0.5 * (xa + xb);
-      const Vec3 normal =
-          normalize(Vec3{-0.2 * std::cos(xm) * std::cos(y), 0.2 * std::sin(xm) * std::sin(y), 1});
-      const Vec3 axis = normalize(normal + Vec3{0.08, 0, 0});
-      f.path.moves.push_back(Move{{tipAt(xa, y), axis}, {tipAt(xb, y), axis}, false});
+      const double xa = -3.5 + 0.18 * k, xb = xa + 0.18;
+      const Vec3 axis = surfaceAxis(0.5 * (xa + xb), y);
+      f.path.moves.push_back(Move{{surfaceTip(xa, y), axis}, {surfaceTip(xb, y), axis}, false});
     }
   }
   return f;
@@ -60,14 +63,7 @@ Fixture freeformFixture() {
 // so the axis turns inside every move (one turning primitive per move).
 Fixture turningFixture() {
   Fixture f;
-  f.stock.extend({0, 0, -3});
-  f.stock.extend({4, 3, 0});
-  auto pose = [](double x, double y) {
-    const Vec3 normal =
-        normalize(Vec3{-0.2 * std::cos(x) * std::cos(y), 0.2 * std::sin(x) * std::sin(y), 1});
-    return Pose{{x, y, -0.5 + 0.2 * std::sin(x) * std::cos(y)},
-                normalize(normal + Vec3{0.08, 0, 0})};
-  };
+  auto pose = [](double x, double y) { return Pose{surfaceTip(x, y), surfaceAxis(x, y)}; };
   for (double y = -0.5; y <= 3.5; y += 0.9)
     for (int k = 0; k < 60; ++k)
       f.path.moves.push_back(Move{pose(-3.5 + 0.18 * k, y), pose(-3.5 + 0.18 * (k + 1), y), false});
@@ -121,14 +117,7 @@ TEST(ZMapCaster, BandsEqualTheWholeMapBitForBit) {
   const std::unique_ptr<SweptScene> scene = buildScene(f.cutter, f.path, f.stock, grid.spacing);
   ZMap whole(grid, f.stock.max.z);
   castZMap(*scene, whole);
-  for (int64_t j0 = 0; j0 < grid.ny; j0 += 37) {
-    const int64_t j1 = std::min(grid.ny, j0 + 37);
-    ZMap band(grid.rows(j0, j1), f.stock.max.z);
-    castZMap(*scene, band);
-    for (int64_t j = j0; j < j1; ++j)
-      for (int64_t i = 0; i < grid.nx; ++i)
-        ASSERT_EQ(band.at(i, j - j0), whole.at(i, j)) << i << " " << j;
-  }
+  expectBandsEqualWhole(*scene, whole, 37, f.stock.max.z);
 }
 
 TEST(ZMapCaster, EveryCellIsTheMinimumOverAllSegments) {

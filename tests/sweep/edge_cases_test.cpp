@@ -24,13 +24,6 @@ namespace {
 
 constexpr double kTol = 1e-9;  // mm; the contract is 1e-6 (CONVENTIONS.md)
 
-Box3 box(const Vec3& a, const Vec3& b) {
-  Box3 s;
-  s.extend(a);
-  s.extend(b);
-  return s;
-}
-
 ToolPath path(std::initializer_list<std::pair<Pose, Pose>> moves) {
   ToolPath p;
   for (const auto& [from, to] : moves) p.moves.push_back(Move{from, to, false});
@@ -64,7 +57,7 @@ const Vec3 kUp{0, 0, 1};
 
 TEST(EdgeCases, ZeroLengthMoveLeavesTheCuttersOwnBottom) {
   const Cutter ball = Cutter::make(CutterType::Ball, 0.5);
-  const Box3 stock = box({0, 0, -1}, {2, 2, 0});
+  const Box3 stock({0, 0, -1}, {2, 2, 0});
   const Vec3 tip{1.03, 0.97, -0.3};
   const SimulationResult r =
       simulate(ball, path({{{tip, kUp}, {tip, kUp}}}), stock, gridCovering(0, 0, 2, 2, 0.02));
@@ -76,7 +69,7 @@ TEST(EdgeCases, ZeroLengthMoveLeavesTheCuttersOwnBottom) {
 
 TEST(EdgeCases, PurePlungeEqualsTheCutterStampedAtTheBottom) {
   const Cutter ball = Cutter::make(CutterType::Ball, 0.5);
-  const Box3 stock = box({0, 0, -1}, {2, 2, 0});
+  const Box3 stock({0, 0, -1}, {2, 2, 0});
   const Vec3 top{1, 1, 0.8}, bottom{1, 1, -0.35};
   for (const bool down : {true, false}) {
     SCOPED_TRACE(down ? "plunge down" : "retract up");
@@ -94,7 +87,7 @@ TEST(EdgeCases, ExactlyHorizontalAxisCutsWithTheCylindersLowestLine) {
   const double R = 0.4;
   const Cutter flat = Cutter::make(CutterType::Flat, R, 0, 2.0);
   const Vec3 axis{1, 0, 0};
-  const Box3 stock = box({0, 0, -1}, {3, 3, 0});
+  const Box3 stock({0, 0, -1}, {3, 3, 0});
   const SimulationResult r =
       simulate(flat, path({{{{0.5, 1, -0.1}, axis}, {{0.5, 2, -0.1}, axis}}}), stock,
                gridCovering(0, 0, 3, 3, 0.03));
@@ -107,7 +100,7 @@ TEST(EdgeCases, ExactlyHorizontalAxisCutsWithTheCylindersLowestLine) {
 
 TEST(EdgeCases, CutterThatNeverTouchesLeavesTheStockTopEverywhere) {
   const Cutter bull = Cutter::make(CutterType::Bull, 1, 0.25);
-  const Box3 stock = box({0, 0, -1}, {3, 3, 0.5});
+  const Box3 stock({0, 0, -1}, {3, 3, 0.5});
   // Above the top (the lowest point is at z = 0.5 + 1e-9), and beside the stock.
   const ToolPath p = path({{{{-1, 1, 0.5 + 1e-9}, kUp}, {{4, 2, 0.5 + 1e-9}, kUp}},
                            {{{5, -3, -0.5}, kUp}, {{5, 6, -0.5}, kUp}}});
@@ -118,7 +111,7 @@ TEST(EdgeCases, CutterThatNeverTouchesLeavesTheStockTopEverywhere) {
 
 TEST(EdgeCases, StockThinnerThanTheDepthKeepsTheCuttersEnvelope) {
   const Cutter ball = Cutter::make(CutterType::Ball, 0.5);
-  const Box3 stock = box({0, 0, -0.1}, {2, 2, 0});  // 0.1 mm thick, cut 0.4 deep
+  const Box3 stock({0, 0, -0.1}, {2, 2, 0});  // 0.1 mm thick, cut 0.4 deep
   const Vec3 tip{1, 1, -0.4};
   const SimulationResult r =
       simulate(ball, path({{{tip, kUp}, {tip, kUp}}}), stock, gridCovering(0, 0, 2, 2, 0.02));
@@ -132,7 +125,7 @@ TEST(EdgeCases, GridOfOneCell) {
   const Vec3 tip{0.1, 0.05, -0.2};
   for (const double spacing : {0.3, 5.0}) {  // exactly the stock, and far larger
     SCOPED_TRACE(spacing);
-    const Box3 stock = box({0, 0, -1}, {0.3, 0.3, 0});
+    const Box3 stock({0, 0, -1}, {0.3, 0.3, 0});
     const GridSpec g = gridCovering(0, 0, 0.3, 0.3, spacing);
     ASSERT_EQ(g.cells(), 1);
     const SimulationResult r = simulate(ball, path({{{tip, kUp}, {tip, kUp}}}), stock, g);
@@ -144,7 +137,7 @@ TEST(EdgeCases, StepOverLargerThanTheCutterLeavesStockTopRidges) {
   // Ball R = 0.5 passes 1.5 mm apart (3 R): between |dy| > R the stock top is untouched;
   // within, the cross profile is the ball's, z = floor + R - sqrt(R^2 - dy^2).
   const Cutter ball = Cutter::make(CutterType::Ball, 0.5);
-  const Box3 stock = box({0, 0, -1}, {4, 4, 0});
+  const Box3 stock({0, 0, -1}, {4, 4, 0});
   RasterSpec spec;
   spec.direction = 'x';
   spec.stepOver = 1.5;

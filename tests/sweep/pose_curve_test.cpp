@@ -13,34 +13,20 @@
 #include <random>
 
 #include "sweep/machine_reference.h"
+#include "tests/support/random_cases.h"
 
 namespace scallop {
 namespace {
 
-struct Case {
-  TableMachine machine;
-  RotaryMotion motion;
-};
-
-Case randomCase(std::mt19937_64& rng, int k) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  Case c;
-  c.machine.kinematics = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
-  c.machine.pivot = {20 * u(rng), 20 * u(rng), 20 * u(rng)};
-  c.machine.offset = {5 * u(rng), 5 * u(rng), 50 + 20 * u(rng)};
-  RotaryMotion& m = c.motion;
-  m.tcp = false;
-  m.tilt0 = 0.8 * u(rng), m.tilt1 = m.tilt0 + 0.6 * u(rng);
-  m.spin0 = 3 * u(rng), m.spin1 = m.spin0 + 1.5 * u(rng);
-  m.joints0 = {30 * u(rng), 30 * u(rng), 30 * u(rng)};
-  m.joints1 = m.joints0 + Vec3{10 * u(rng), 10 * u(rng), 10 * u(rng)};
-  return c;
+test::MachineMove randomCase(std::mt19937_64& rng, int k) {
+  return test::randomMachineMove(rng, k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC,
+                                 {20, 5, 50, 20, 0.8, 0.6, 3, 1.5, 30, 10});
 }
 
 TEST(PoseCurve, ForwardKinematicsAreTrtfuncs) {
   std::mt19937_64 rng(7);
   for (int k = 0; k < 200; ++k) {
-    const Case c = randomCase(rng, k);
+    const test::MachineMove c = randomCase(rng, k);
     const RotaryMotion& m = c.motion;
     const PoseCurve curve = PoseCurve::jointLinear(c.machine, m);
     ASSERT_FALSE(curve.linearTip());
@@ -76,7 +62,7 @@ TEST(PoseCurve, TipVelocityAndBoundsAgreeWithFiniteDifferences) {
   std::mt19937_64 rng(11);
   double worstAccelRatio = 0, worstJerkRatio = 0;
   for (int k = 0; k < 100; ++k) {
-    const Case c = randomCase(rng, k);
+    const test::MachineMove c = randomCase(rng, k);
     const PoseCurve curve = PoseCurve::jointLinear(c.machine, c.motion);
     const double accel = curve.tipAccelBound(), jerk = curve.tipJerkBound();
     ASSERT_GT(accel, 0);

@@ -21,9 +21,7 @@ TEST(Raster, LeadOnlyIsAPlainRotationTowardsTheFeed) {
 
 TEST(Raster, PassesDepthAndExtent) {
   const Cutter bull = Cutter::make(CutterType::Bull, 3, 1);
-  Box3 stock;
-  stock.extend({0, 0, -5});
-  stock.extend({20, 20, 0});
+  const Box3 stock({0, 0, -5}, {20, 20, 0});
   RasterSpec spec;
   spec.stepOver = 2.5;
   spec.depth = 0.5;
@@ -46,9 +44,7 @@ TEST(Raster, PassesDepthAndExtent) {
 
 TEST(Raster, RejectsBadFieldsByName) {
   const Cutter ball = Cutter::make(CutterType::Ball, 3);
-  Box3 stock;
-  stock.extend({0, 0, -5});
-  stock.extend({20, 20, 0});
+  const Box3 stock({0, 0, -5}, {20, 20, 0});
   RasterSpec spec;
   spec.stepOver = 0;
   try {

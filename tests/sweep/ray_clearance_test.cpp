@@ -12,9 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include "sweep/brute_force_reference.h"
 #include "base/constants.h"
+#include "sweep/brute_force_reference.h"
 #include "sweep/pose_curve.h"
+#include "tests/support/random_cases.h"
 
 namespace scallop {
 namespace {
@@ -35,13 +36,9 @@ Move randomMove(std::mt19937_64& rng, int k, Family family) {
   const bool camLike = family == Family::CamLike;
   std::uniform_real_distribution<double> u(0, 1);
   Move m;
-  const double R = 1 + 4 * u(rng);
-  const CutterType type =
-      k % 3 == 0 ? CutterType::Ball : (k % 3 == 1 ? CutterType::Flat : CutterType::Bull);
-  const double r = type == CutterType::Bull ? R * (0.15 + 0.7 * u(rng)) : 0;
-  const double L = R * (2 + 3 * u(rng));
-  m.cutter = Cutter::make(type, R, r, L);
-  m.refCutter = ref::makeRefCutter(type, R, r, L);
+  const test::CutterShape s = test::randomCutterShape(rng, k);
+  m.cutter = Cutter::make(s.type, s.radius, s.cornerRadius, s.fluteLength);
+  m.refCutter = ref::makeRefCutter(s.type, s.radius, s.cornerRadius, s.fluteLength);
   const double lean = (family == Family::Any ? kPi / 2 : kPi / 6) * u(rng);
   const double azimuth = 2 * kPi * u(rng);
   // The turn's scale: ~1 degree (CAM-like), up to ~15 degrees (turning).
@@ -101,6 +98,18 @@ void randomLine(std::mt19937_64& rng, const Move& m, double& x, double& y) {
   y = 0.5 * (m.p0.y + m.p1.y) + (0.5 * std::fabs(m.p1.y - m.p0.y) + reach) * u(rng);
 }
 
+// Three random lines over the move (randomLine); `visit(x, y, minimum)` for each that
+// meets the solid, in the order drawn (visit may draw from rng too).
+template <class Visit>
+void forLinesThatMeetIt(std::mt19937_64& rng, const Move& m, Visit&& visit) {
+  for (int q = 0; q < 3; ++q) {
+    double x, y;
+    randomLine(rng, m, x, y);
+    const RefMinimum ref = referenceMinimum(m, x, y);
+    if (ref.hit) visit(x, y, ref);
+  }
+}
+
 // Soundness: a height at or above the true lowest point is never cleared, from any
 // anchor, on CAM-like moves, moves that turn by up to ~15 degrees and any move: just above it
 // (1e-8, 1e-6 mm), well above it, and above the whole cutter on that line (where only the
@@ -113,11 +122,7 @@ TEST(RayClearance, NeverClearsAHeightAtOrAboveTheLowestPoint) {
     const Family family = k % 5 == 0 ? Family::CamLike : k % 5 == 4 ? Family::Any : Family::Turning;
     const Move m = randomMove(rng, k, family);
     const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
-    for (int q = 0; q < 3; ++q) {
-      double x, y;
-      randomLine(rng, m, x, y);
-      const RefMinimum ref = referenceMinimum(m, x, y);
-      if (!ref.hit) continue;
+    forLinesThatMeetIt(rng, m, [&](double x, double y, const RefMinimum& ref) {
       ++hits;
       const double above[] = {1e-8, 1e-6, 1e-3, 0.5, 2 * m.cutter.radius, 50};
       const double anchors[] = {0, 0.5, 1, ref.t, u(rng)};
@@ -130,7 +135,7 @@ TEST(RayClearance, NeverClearsAHeightAtOrAboveTheLowestPoint) {
               << " from t = " << anchor;
         }
       }
-    }
+    });
   }
   std::printf("RayClearance soundness: %d lines that meet the solid, %d checks\n", hits, checks);
   EXPECT_GE(hits, 300);
@@ -146,20 +151,16 @@ TEST(RayClearance, ClearsHeightsJustBelowTheLowestPointOfCamLikeMoves) {
   for (int k = 0; k < 300; ++k) {
     const Move m = randomMove(rng, k, Family::CamLike);
     const PoseCurve curve = PoseCurve::linear({m.p0, m.a0}, {m.p1, m.a1});
-    for (int q = 0; q < 3; ++q) {
-      double x, y;
-      randomLine(rng, m, x, y);
-      const RefMinimum ref = referenceMinimum(m, x, y);
-      if (!ref.hit) continue;
+    forLinesThatMeetIt(rng, m, [&](double x, double y, const RefMinimum& ref) {
       if (m.cutter.type == CutterType::Flat) {
         ++flatLines;
         flatCleared += rayClearsMove(m.cutter, curve, {x, y, ref.z - 1e-3}, ref.t, 0, 1);
-        continue;
+        return;
       }
       ++lines;
       atMinimum += rayClearsMove(m.cutter, curve, {x, y, ref.z - 1e-9}, ref.t, 0, 1);
       fromMiddle += rayClearsMove(m.cutter, curve, {x, y, ref.z - 5e-3}, 0.5, 0, 1);
-    }
+    });
   }
   std::printf(
       "RayClearance on CAM-like moves: %d lines; cleared 1e-9 mm below from the minimum: %d, "

@@ -20,18 +20,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "sweep/brute_force_reference.h"
 #include "base/constants.h"
+#include "sweep/brute_force_reference.h"
 #include "sweep/contact_knots.h"
-#include "sweep/machine_reference.h"
 #include "sweep/pose_curve.h"
 #include "sweep/swept_move.h"
+#include "tests/support/random_cases.h"
 
 namespace scallop {
 namespace {
@@ -41,12 +40,7 @@ using ref::unitFromAngles;
 // ---------------------------------------------------------------------------------------
 // PoseFrame
 
-struct NamedCurve {
-  std::string name;
-  PoseCurve curve;
-  // The curve as the conventions write it (not PoseCurve's code): tip and axis at t.
-  std::function<Vec3(double)> tip, axis;
-};
+using NamedCurve = test::CheckedCurve;
 
 std::vector<NamedCurve> frameCurves() {
   std::vector<NamedCurve> out;
@@ -72,36 +66,18 @@ std::vector<NamedCurve> frameCurves() {
   // Rotary, TCP on: both kinematics, tilt and spin both moving, or one of them alone.
   for (int k = 0; k < 6; ++k) {
     const RotaryKinematics kin = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
-    const double b0 = 0.7 * u(rng), b1 = k / 2 == 2 ? b0 : b0 + 0.4 * u(rng);
-    const double c0 = 3 * u(rng), c1 = k / 2 == 1 ? c0 : c0 + 1.2 * u(rng);
-    const Vec3 p0{u(rng), u(rng), u(rng)}, p1{2 * u(rng), 2 * u(rng), u(rng)};
-    out.push_back(
-        {std::string("rotary ") + (k % 2 ? "AC " : "BC ") + std::to_string(k),
-         PoseCurve::rotary(kin, p0, p1, b0, b1, c0, c1),
-         [=](double t) { return p0 + (p1 - p0) * t; },
-         [=](double t) { return conventionAxis(kin, b0 + (b1 - b0) * t, c0 + (c1 - c0) * t); }});
+    test::RotaryRanges ranges{0.7, 0.4, 3, 1.2};
+    ranges.tiltStands = k / 2 == 2, ranges.spinStands = k / 2 == 1;
+    out.push_back(test::randomRotaryCurve(
+        std::string("rotary ") + (k % 2 ? "AC " : "BC ") + std::to_string(k), rng, kin, ranges));
   }
   // Joint-linear (TCP off): the tip follows trtfuncs' forward kinematics.
   for (int k = 0; k < 4; ++k) {
-    TableMachine m;
-    m.kinematics = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
-    m.pivot = {10 * u(rng), 10 * u(rng), 10 * u(rng)};
-    m.offset = {3 * u(rng), 3 * u(rng), 40 + 10 * u(rng)};
-    RotaryMotion mo;
-    mo.tcp = false;
-    mo.tilt0 = 0.7 * u(rng), mo.tilt1 = mo.tilt0 + 0.3 * u(rng);
-    mo.spin0 = 3 * u(rng), mo.spin1 = mo.spin0 + 0.8 * u(rng);
-    mo.joints0 = {20 * u(rng), 20 * u(rng), 20 * u(rng)};
-    mo.joints1 = mo.joints0 + Vec3{5 * u(rng), 5 * u(rng), 5 * u(rng)};
-    auto tilt = [=](double t) { return mo.tilt0 + (mo.tilt1 - mo.tilt0) * t; };
-    auto spin = [=](double t) { return mo.spin0 + (mo.spin1 - mo.spin0) * t; };
-    out.push_back({std::string("joint-linear ") + (k % 2 ? "AC " : "BC ") + std::to_string(k),
-                   PoseCurve::jointLinear(m, mo),
-                   [=](double t) {
-                     return trtForward(m, mo.joints0 + (mo.joints1 - mo.joints0) * t, tilt(t),
-                                       spin(t));
-                   },
-                   [=](double t) { return conventionAxis(m.kinematics, tilt(t), spin(t)); }});
+    const RotaryKinematics kin = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
+    const test::MachineMove move =
+        test::randomMachineMove(rng, kin, {10, 3, 40, 10, 0.7, 0.3, 3, 0.8, 20, 5});
+    out.push_back(test::jointLinearCurve(
+        std::string("joint-linear ") + (k % 2 ? "AC " : "BC ") + std::to_string(k), move));
   }
   return out;
 }

@@ -11,10 +11,11 @@
 #include <random>
 #include <vector>
 
-#include "sweep/brute_force_reference.h"
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "sweep/brute_force_reference.h"
 #include "sweep/pose_curve.h"
+#include "tests/support/random_cases.h"
 
 namespace scallop {
 namespace {
@@ -32,13 +33,9 @@ struct RandomCase {
 RandomCase randomCase(std::mt19937_64& rng, int k) {
   std::uniform_real_distribution<double> u(0, 1);
   RandomCase c;
-  const double R = 1 + 4 * u(rng);
-  const CutterType type =
-      k % 3 == 0 ? CutterType::Ball : (k % 3 == 1 ? CutterType::Flat : CutterType::Bull);
-  const double r = type == CutterType::Bull ? R * (0.15 + 0.7 * u(rng)) : 0;
-  const double L = R * (2 + 3 * u(rng));
-  c.cutter = Cutter::make(type, R, r, L);
-  c.refCutter = ref::makeRefCutter(type, R, r, L);
+  const test::CutterShape s = test::randomCutterShape(rng, k);
+  c.cutter = Cutter::make(s.type, s.radius, s.cornerRadius, s.fluteLength);
+  c.refCutter = ref::makeRefCutter(s.type, s.radius, s.cornerRadius, s.fluteLength);
   // Polar angles in [0, 90] deg for both ends; the turn is at most 90 degrees.
   for (;;) {
     c.a0 = unitFromAngles(0.5 * kPi * u(rng), 2 * kPi * u(rng));

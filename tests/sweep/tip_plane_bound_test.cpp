@@ -14,25 +14,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "sweep/brute_force_reference.h"
 #include "base/constants.h"
+#include "sweep/brute_force_reference.h"
 #include "sweep/cutter.h"
-#include "sweep/machine_reference.h"
 #include "sweep/pose_curve.h"
+#include "tests/support/random_cases.h"
 
 namespace scallop {
 namespace {
 
-struct Move {
-  std::string name;
-  PoseCurve curve;
-  std::function<Vec3(double)> tip, axis;  // as the conventions write them
-};
+using Move = test::CheckedCurve;
 
 std::vector<Move> randomMoves(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1, 1);
@@ -51,33 +46,14 @@ std::vector<Move> randomMoves(std::mt19937_64& rng) {
   }
   for (int k = 0; k < 4; ++k) {  // rotary, TCP on
     const RotaryKinematics kin = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
-    const double b0 = 0.6 * u(rng), b1 = b0 + 0.3 * u(rng);
-    const double c0 = 3 * u(rng), c1 = c0 + 1.0 * u(rng);
-    const Vec3 p0{u(rng), u(rng), u(rng)}, p1{2 * u(rng), 2 * u(rng), u(rng)};
     out.push_back(
-        {"rotary " + std::to_string(k), PoseCurve::rotary(kin, p0, p1, b0, b1, c0, c1),
-         [=](double t) { return p0 + (p1 - p0) * t; },
-         [=](double t) { return conventionAxis(kin, b0 + (b1 - b0) * t, c0 + (c1 - c0) * t); }});
+        test::randomRotaryCurve("rotary " + std::to_string(k), rng, kin, {0.6, 0.3, 3, 1.0}));
   }
   for (int k = 0; k < 4; ++k) {  // joint-linear, TCP off: the tip on a curve
-    TableMachine m;
-    m.kinematics = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
-    m.pivot = {5 * u(rng), 5 * u(rng), 5 * u(rng)};
-    m.offset = {2 * u(rng), 2 * u(rng), 20 + 5 * u(rng)};
-    RotaryMotion mo;
-    mo.tcp = false;
-    mo.tilt0 = 0.5 * u(rng), mo.tilt1 = mo.tilt0 + 0.05 * u(rng);
-    mo.spin0 = 3 * u(rng), mo.spin1 = mo.spin0 + 0.1 * u(rng);
-    mo.joints0 = {5 * u(rng), 5 * u(rng), 5 * u(rng)};
-    mo.joints1 = mo.joints0 + Vec3{u(rng), u(rng), u(rng)};
-    auto tilt = [=](double t) { return mo.tilt0 + (mo.tilt1 - mo.tilt0) * t; };
-    auto spin = [=](double t) { return mo.spin0 + (mo.spin1 - mo.spin0) * t; };
-    out.push_back({"joint-linear " + std::to_string(k), PoseCurve::jointLinear(m, mo),
-                   [=](double t) {
-                     return trtForward(m, mo.joints0 + (mo.joints1 - mo.joints0) * t, tilt(t),
-                                       spin(t));
-                   },
-                   [=](double t) { return conventionAxis(m.kinematics, tilt(t), spin(t)); }});
+    const RotaryKinematics kin = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
+    const test::MachineMove move =
+        test::randomMachineMove(rng, kin, {5, 2, 20, 5, 0.5, 0.05, 3, 0.1, 5, 1});
+    out.push_back(test::jointLinearCurve("joint-linear " + std::to_string(k), move));
   }
   return out;
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,14 @@ struct BadInputRow {
   int status;                                              // expected exit status
   std::vector<std::string> mentions;                       // each must appear in the message
 };
+
+// A row's input made from a template: `s` with its first `from` replaced by `to` (a
+// template without `from` is a broken test, not a bad input).
+inline std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const size_t at = s.find(from);
+  if (at == std::string::npos) throw std::logic_error("row template lacks " + from);
+  return s.replace(at, from.size(), to);
+}
 
 class BadInputMatrix : public CliFixture {
  protected:

@@ -23,12 +23,6 @@ const std::string kMachineJob = R"({
   "path":  {"file": "p.nc"}
 })";
 
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  const size_t at = s.find(from);
-  if (at == std::string::npos) throw std::logic_error("row template lacks " + from);
-  return s.replace(at, from.size(), to);
-}
-
 BadInputRow program(const std::string& name, const std::string& text,
                     std::vector<std::string> mentions, const std::string& job = kToolsJob) {
   return {name,

@@ -22,12 +22,6 @@ const std::string kFileJob = R"({
   "path":  {"file": "part.txt"}
 })";
 
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  const size_t at = s.find(from);
-  if (at == std::string::npos) throw std::logic_error("row template lacks " + from);
-  return s.replace(at, from.size(), to);
-}
-
 const std::string kGarbage("\x89\x00\xff\x13{\x01\"tool\x00\x7f\xfe\n\x1b[2J", 17);
 
 BadInputRow jobRow(const std::string& name, const std::string& text,

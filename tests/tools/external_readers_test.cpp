@@ -16,6 +16,7 @@
 
 #include "cli_harness.h"
 #include "raycast/zmap.h"
+#include "tests/support/sampled_field.h"
 #include "tools/io/height_images.h"
 #include "tools/io/x3p_writer.h"
 
@@ -29,16 +30,9 @@ bool installed(const std::string& program) {
 // A map with distinct, non-separable values and a non-zero origin, so that a
 // transposed, flipped or shifted reading is caught.
 ZMap knownMap() {
-  GridSpec g;
-  g.originX = -3.25;
-  g.originY = 1.5;
-  g.spacing = 0.125;
-  g.nx = 9;
-  g.ny = 6;
-  ZMap map(g, 0.0);
-  for (int64_t j = 0; j < g.ny; ++j)
-    for (int64_t i = 0; i < g.nx; ++i) map.at(i, j) = -0.5 + 0.01 * i - 0.003 * j + 1e-4 * i * j;
-  return map;
+  return indexedField(-3.25, 1.5, 9, 6, 0.125, [](int64_t i, int64_t j) {
+    return -0.5 + 0.01 * i - 0.003 * j + 1e-4 * i * j;
+  });
 }
 
 // The first GwyDataField of a .gwy file (Gwyddion user guide, "GWY file format"):
@@ -174,18 +168,25 @@ class ExternalReaders : public CliFixture {
     EXPECT_TRUE(GwyParser(slurp(gwy)).parse(f)) << "no GwyDataField in " << gwy;
     return f;
   }
+  // `write`s `map` to `name`, has Gwyddion read it and checks the size and extent it saw.
+  template <class Write>
+  GwyField writtenAndRead(const ZMap& map, const std::string& name, Write write) {
+    write(map, path(name), "external reader check");
+    const GwyField f = gwyddionReads(path(name));
+    const GridSpec& g = map.grid();
+    EXPECT_EQ(f.xres, g.nx);
+    EXPECT_EQ(f.yres, g.ny);
+    EXPECT_NEAR(f.xreal, g.nx * g.spacing * 1e-3, 1e-18);
+    EXPECT_NEAR(f.yreal, g.ny * g.spacing * 1e-3, 1e-18);
+    return f;
+  }
 };
 
 TEST_F(ExternalReaders, GwyddionReadsTheGsfAsWritten) {
   if (!installed("gwyddion")) GTEST_SKIP() << "gwyddion is not installed (scripts/install-deps.sh)";
   const ZMap map = knownMap();
   const GridSpec& g = map.grid();
-  writeHeightsGsf(map, path("h.gsf"), "external reader check");
-  const GwyField f = gwyddionReads(path("h.gsf"));
-  EXPECT_EQ(f.xres, g.nx);
-  EXPECT_EQ(f.yres, g.ny);
-  EXPECT_NEAR(f.xreal, g.nx * g.spacing * 1e-3, 1e-18);
-  EXPECT_NEAR(f.yreal, g.ny * g.spacing * 1e-3, 1e-18);
+  const GwyField f = writtenAndRead(map, "h.gsf", writeHeightsGsf);
   EXPECT_NEAR(f.xoff, g.originX * 1e-3, 1e-18);
   EXPECT_NEAR(f.yoff, g.originY * 1e-3, 1e-18);
   EXPECT_EQ(f.unitXy, "m");
@@ -209,12 +210,7 @@ TEST_F(ExternalReaders, GwyddionReadsTheX3pAsWritten) {
   if (!installed("gwyddion")) GTEST_SKIP() << "gwyddion is not installed (scripts/install-deps.sh)";
   const ZMap map = knownMap();
   const GridSpec& g = map.grid();
-  writeHeightsX3p(map, path("h.x3p"), "external reader check");
-  const GwyField f = gwyddionReads(path("h.x3p"));
-  EXPECT_EQ(f.xres, g.nx);
-  EXPECT_EQ(f.yres, g.ny);
-  EXPECT_NEAR(f.xreal, g.nx * g.spacing * 1e-3, 1e-18);
-  EXPECT_NEAR(f.yreal, g.ny * g.spacing * 1e-3, 1e-18);
+  const GwyField f = writtenAndRead(map, "h.x3p", writeHeightsX3p);
   ASSERT_EQ(f.data.size(), size_t(g.cells()));
   // X3P holds float64 metres in ZMap order (first row = smallest y): exact doubles.
   for (size_t k = 0; k < f.data.size(); ++k) EXPECT_EQ(f.data[k], map.heights()[k] * 1e-3) << k;

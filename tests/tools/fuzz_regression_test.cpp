@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "base/input_error.h"
@@ -42,6 +43,17 @@ int replay(const std::string& folder) {
 
 TEST(FuzzRegression, SeedCorpusIsHandled) {
   EXPECT_GE(replay("corpus"), 10);
+}
+
+// tests/fuzz/CMakeLists.txt and scripts/fuzz.sh make a fuzzer of each corpus folder.
+TEST(FuzzRegression, EachCorpusFolderNamesOneTarget) {
+  std::set<std::string> folders;
+  for (const auto& entry : fs::directory_iterator(kFuzzDir / "corpus")) {
+    if (entry.is_directory()) folders.insert(entry.path().filename().string());
+  }
+  std::set<std::string> names;
+  for (const auto& target : fuzz::targets()) names.insert(target.first);
+  EXPECT_EQ(folders, names);
 }
 
 TEST(FuzzRegression, EveryFixedFindingIsHandled) {

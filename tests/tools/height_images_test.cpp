@@ -20,8 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "raycast/zmap.h"
 #include "base/input_error.h"
+#include "raycast/zmap.h"
+#include "tests/support/sampled_field.h"
 #include "tools/io/atomic_file.h"
 #include "tools/render/preview_png.h"
 
@@ -36,16 +37,7 @@ double knownHeight(int64_t i, int64_t j) {
 }
 
 ZMap makeMap() {
-  GridSpec g;
-  g.originX = -3.25;
-  g.originY = 1.5;
-  g.spacing = 0.125;
-  g.nx = 7;
-  g.ny = 5;
-  ZMap map(g, 0.0);
-  for (int64_t j = 0; j < g.ny; ++j)
-    for (int64_t i = 0; i < g.nx; ++i) map.at(i, j) = knownHeight(i, j);
-  return map;
+  return indexedField(-3.25, 1.5, 7, 5, 0.125, knownHeight);
 }
 
 std::vector<unsigned char> readBytes(const fs::path& p) {

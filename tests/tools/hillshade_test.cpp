@@ -19,7 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "base/constants.h"
 #include "base/input_error.h"
+#include "tests/support/sampled_field.h"
 #include "tools/render/height_colours.h"
 #include "tools/render/hillshade_png.h"
 #include "tools/render/preview_png.h"
@@ -30,19 +32,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
+constexpr double kDeg = kRadPerDeg;
 
-// nx x ny cells of side `spacing` with z = f(cell centre x, y).
+// nx x ny cells of side `spacing` from the origin with z = f(cell centre x, y).
 ZMap mapOf(int64_t nx, int64_t ny, double spacing, const std::function<double(double, double)>& f) {
-  GridSpec g;
-  g.spacing = spacing;
-  g.nx = nx;
-  g.ny = ny;
-  ZMap m(g, 0.0);
-  for (int64_t j = 0; j < ny; ++j)
-    for (int64_t i = 0; i < nx; ++i) m.at(i, j) = f(g.cellCentreX(i), g.cellCentreY(j));
-  return m;
+  return sampledField(0, 0, nx, ny, spacing, f);
 }
 
 // The plane through the origin that falls by tan(tilt) per mm towards the azimuth

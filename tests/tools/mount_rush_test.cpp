@@ -85,9 +85,7 @@ void checkPath(const std::string& file, const Cutter& cutter, double spacing) {
   EXPECT_EQ(misses.load(), 3036) << file;  // the README's count of floor points
 
   // 2. Simulate over the relief and compare with the design's upper envelope.
-  Box3 stock;
-  stock.extend({-41, -25, -27});
-  stock.extend({45, 18.5, 2});
+  const Box3 stock({-41, -25, -27}, {45, 18.5, 2});
   const GridSpec grid = gridCovering(stock.min.x, stock.min.y, stock.max.x, stock.max.y, spacing);
   SimulationOptions options;
   options.tileSize = cutter.radius;  // coarse culling tiles: the test's time is the scene's

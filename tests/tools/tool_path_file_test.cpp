@@ -60,9 +60,7 @@ TEST_F(PathFile, GcodeBallRasterEqualsTheJobRasterBitForBit) {
 
 TEST_F(PathFile, FiveAxisAptEqualsTheRasterLeadAndTiltBitForBit) {
   const Cutter cutter = Cutter::make(CutterType::Bull, 1.5, 0.5);
-  Box3 stock;
-  stock.extend({0, 0, -2});
-  stock.extend({5, 4, 0});
+  const Box3 stock({0, 0, -2}, {5, 4, 0});
   RasterSpec spec;
   spec.stepOver = 0.7, spec.depth = 0.2, spec.leadDeg = 10, spec.tiltDeg = -4, spec.zigzag = true;
   const ToolPath raster = makeRaster(cutter, stock, spec);

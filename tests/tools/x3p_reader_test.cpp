@@ -11,25 +11,19 @@
 #include <fstream>
 #include <string>
 
+#include "base/input_error.h"
 #include "cli_harness.h"
 #include "raycast/zmap.h"
-#include "base/input_error.h"
+#include "tests/support/sampled_field.h"
 #include "tools/io/x3p_writer.h"
 
 namespace scallop::test {
 namespace {
 
 ZMap sampleMap() {
-  GridSpec g;
-  g.originX = -1.25;
-  g.originY = 3.5;
-  g.spacing = 0.125;
-  g.nx = 7;
-  g.ny = 5;
-  ZMap map(g, 0.0);
-  for (int64_t j = 0; j < g.ny; ++j)
-    for (int64_t i = 0; i < g.nx; ++i) map.at(i, j) = std::sin(0.7 * double(i)) - 0.3 * double(j);
-  return map;
+  return indexedField(-1.25, 3.5, 7, 5, 0.125, [](int64_t i, int64_t j) {
+    return std::sin(0.7 * double(i)) - 0.3 * double(j);
+  });
 }
 
 std::string readError(const std::string& path) {
