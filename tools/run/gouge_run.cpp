@@ -49,10 +49,8 @@ void writePostures(const StrategyResult& r, const std::string& path) {
   });
 }
 
-}  // namespace
-
-GougeResult runGouge(GougeSettings a) {
-  const auto tStart = Clock::now();
+// Checks the settings and sets the strategy's feed and inclination axes from their names.
+void checkSettings(GougeSettings& a) {
   requirePositive(a.radius, "--radius", "the cutter radius (mm)");
   requirePositive(a.length, "--length", "the flute length (mm)");
   StrategyOptions& so = a.strategy;
@@ -75,6 +73,39 @@ GougeResult runGouge(GougeSettings a) {
   requirePositive(a.mapTolerance, "--map-tolerance", "the gouge map tolerance (mm)");
   if (a.gridSpacing != 0) requirePositive(a.gridSpacing, "--grid-spacing", "the grid spacing (mm)");
   if (!a.outDir.empty()) ensureWritableDirectory(a.outDir);
+}
+
+// The report's "gouge_map" block.
+json gougeMapJson(const GridSpec& grid, double tolerance, const GougeMapStats& g) {
+  auto frac = [&](int64_t n) { return g.designCells ? double(n) / double(g.designCells) : 0.0; };
+  return {{"grid",
+           {{"origin", {grid.originX, grid.originY}},
+            {"spacing", grid.spacing},
+            {"nx", grid.nx},
+            {"ny", grid.ny}}},
+          {"tolerance", tolerance},
+          {"swept_segments", g.sweptSegments},
+          {"design_cells", g.designCells},
+          {"untouched_cells", g.untouchedCells},
+          {"over_cut",
+           {{"cells", g.overCutCells},
+            {"fraction", frac(g.overCutCells)},
+            {"max_depth", g.maxOverCut},
+            {"mean_depth", g.meanOverCut}}},
+          {"under_cut",
+           {{"cells", g.underCutCells},
+            {"fraction", frac(g.underCutCells)},
+            {"max_height", g.maxUnderCut},
+            {"mean_height", g.meanUnderCut}}},
+          {"depth", "vertical: design height - machined height on the z-map, mm"}};
+}
+
+}  // namespace
+
+GougeResult runGouge(GougeSettings a) {
+  const auto tStart = Clock::now();
+  checkSettings(a);
+  const StrategyOptions& so = a.strategy;
   const Cutter cutter = Cutter::make(CutterType::Flat, a.radius, 0, a.length, "tool");
 
   StlInfo info;
@@ -108,28 +139,7 @@ GougeResult runGouge(GougeSettings a) {
     mo.tolerance = a.mapTolerance;
     gm = gougeMap(index, cutter, r.path, grid, mo);
     mapSeconds = secondsSince(tMap);
-    const GougeMapStats& g = gm.stats;
-    auto frac = [&](int64_t n) { return g.designCells ? double(n) / double(g.designCells) : 0.0; };
-    mapJson = {{"grid",
-                {{"origin", {grid.originX, grid.originY}},
-                 {"spacing", grid.spacing},
-                 {"nx", grid.nx},
-                 {"ny", grid.ny}}},
-               {"tolerance", a.mapTolerance},
-               {"swept_segments", g.sweptSegments},
-               {"design_cells", g.designCells},
-               {"untouched_cells", g.untouchedCells},
-               {"over_cut",
-                {{"cells", g.overCutCells},
-                 {"fraction", frac(g.overCutCells)},
-                 {"max_depth", g.maxOverCut},
-                 {"mean_depth", g.meanOverCut}}},
-               {"under_cut",
-                {{"cells", g.underCutCells},
-                 {"fraction", frac(g.underCutCells)},
-                 {"max_height", g.maxUnderCut},
-                 {"mean_height", g.meanUnderCut}}},
-               {"depth", "vertical: design height - machined height on the z-map, mm"}};
+    mapJson = gougeMapJson(grid, a.mapTolerance, gm.stats);
   }
 
   json j = newReport(a.threads);
