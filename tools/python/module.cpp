@@ -1,7 +1,8 @@
 // The Python module `scallop` (issue 16): the simulator for scripts and notebooks.
 // simulate() runs a job in memory and returns NumPy heights; interval() and stats() are
 // `scallop interval --json` and `scallop stats --json`'s surface_stats; read_heights()
-// and write_heights() exchange height files. Every function is the code the CLI runs
+// and write_heights() exchange height files; gouge(), validate() and bench() are those
+// commands' runs and documents. Every function is the code the CLI runs
 // (tools/run, tools/io), so a script and the command line agree to the bit. A tool
 // like tools/cli: it sits on scallop_run and nothing below includes it.
 #include <pybind11/pybind11.h>
@@ -10,6 +11,7 @@
 #include "base/version.h"
 #include "tools/python/analysis_bindings.h"
 #include "tools/python/height_arrays.h"
+#include "tools/python/run_bindings.h"
 #include "tools/python/simulate_binding.h"
 
 namespace py = pybind11;
@@ -25,6 +27,9 @@ PYBIND11_MODULE(scallop, m) {
       "  stats(heights, spacing)      ISO 25178-2 Sa, Sq, Ssk, Sku, Sp, Sv, Sz\n"
       "  read_heights(path)           .gsf / .exr / .x3p -> (heights, grid)\n"
       "  write_heights(path, h, grid) .gsf / .exr / .x3p / .png / .tif\n"
+      "  gouge(surface, radius, length, ...)  seed 004's strategy and gouge check (report)\n"
+      "  validate(output)             the seed tables vs the simulated truth (CSV + SVG)\n"
+      "  bench(cases, quick=...)      the standard performance cases (bench --json)\n"
       "  InputError                   bad input (a ValueError); the message names the field\n\n"
       "Example:\n"
       "  import scallop\n"
@@ -41,4 +46,5 @@ PYBIND11_MODULE(scallop, m) {
   scallop::python::bindHeightArrays(m);
   scallop::python::bindSimulate(m);
   scallop::python::bindAnalysis(m);
+  scallop::python::bindRuns(m);
 }

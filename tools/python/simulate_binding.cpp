@@ -3,16 +3,15 @@
 #include <pybind11/stl.h>
 #include <tbb/global_control.h>
 
-#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "base/input_error.h"
 #include "tools/io/job.h"
 #include "tools/python/height_arrays.h"
 #include "tools/python/json_convert.h"
+#include "tools/python/python_progress.h"
 #include "tools/run/job_loader.h"
 #include "tools/run/simulation_run.h"
 
@@ -21,63 +20,6 @@ namespace scallop::python {
 namespace py = pybind11;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Thrown through the C++ run to stop it; the Python error it stands for is raised after.
-struct PythonCancel {};
-
-// RunSettings::progress for a run with the GIL released (see simulate_binding.h).
-class PythonProgress {
- public:
-  // With the GIL held.
-  explicit PythonProgress(py::object callback)
-      : callback_(std::move(callback)), mainThread_(std::this_thread::get_id()) {}
-
-  // Any thread, serialised by the caster, without the GIL.
-  void operator()(int64_t done, int64_t total) {
-    // Tiles that other threads finish while the cancellation spreads call in vain.
-    if (error_) throw PythonCancel();
-    const Clock::time_point now = Clock::now();
-    const bool poll = std::this_thread::get_id() == mainThread_ && now - lastPoll_ >= kPollEvery;
-    const bool report =
-        !callback_.is_none() && (done == total || now - lastReport_ >= kReportEvery);
-    if (!poll && !report) return;
-    py::gil_scoped_acquire gil;
-    if (poll) {
-      lastPoll_ = now;
-      if (PyErr_CheckSignals() != 0) cancelWithPythonError();
-    }
-    if (report) {
-      lastReport_ = now;
-      try {
-        callback_(done, total);
-      } catch (py::error_already_set& e) {
-        error_ = std::move(e);
-        throw PythonCancel();
-      }
-    }
-  }
-
-  // With the GIL held, after a PythonCancel: raises the Python error it stands for.
-  [[noreturn]] void raise() {
-    if (error_) throw *error_;
-    throw std::logic_error("a cancelled run without a Python error");
-  }
-
- private:
-  static constexpr std::chrono::milliseconds kPollEvery{20}, kReportEvery{50};
-
-  [[noreturn]] void cancelWithPythonError() {
-    error_.emplace();  // fetches the error that PyErr_CheckSignals set
-    throw PythonCancel();
-  }
-
-  py::object callback_;
-  std::thread::id mainThread_;
-  Clock::time_point lastPoll_{}, lastReport_{};
-  std::optional<py::error_already_set> error_;
-};
 
 // The result of simulate().
 struct Result {

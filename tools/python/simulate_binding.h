@@ -7,7 +7,8 @@
 // 20 ms: on the Python main thread, which takes part in the parallel loop, it runs
 // PyErr_CheckSignals, so Ctrl-C raises KeyboardInterrupt there; and it calls the user's
 // progress(done, total), at most every 50 ms and once at the end. An exception from
-// either unwinds the run (TBB cancels the other tiles) and is raised in the caller.
+// either unwinds the run (TBB cancels the other tiles) and is raised in the caller
+// (tools/python/python_progress.h, which bench() uses too).
 #pragma once
 
 #include <pybind11/pybind11.h>

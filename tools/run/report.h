@@ -1,7 +1,9 @@
 // report.json: the one builder of what every run reports. `simulate` (in memory and in
-// bands), `merge`, `gouge` and `bench` all start their document with newReport() and
-// write it with writeReport(); a simulation's whole report comes from
-// simulationReport(), so the in-memory and the tiled runs cannot drift apart.
+// bands), `merge`, the gouge run (tools/run/gouge_run.h) and the benchmark run
+// (tools/run/bench_run.h), from the CLI or the Python module alike, all start their
+// document with newReport() and write or print it with writeReport() / reportText(); a
+// simulation's whole report comes from simulationReport(), so the in-memory and the
+// tiled runs cannot drift apart.
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,101 @@
+// The benchmark run (tools/run/bench_run.h) called directly: its document, the stages
+// it reports progress for, a progress callback that throws (the CLI's Ctrl-C) stopping
+// it, and bad settings.
+#include "tools/run/bench_run.h"
+
+#include <fmt/core.h>
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "base/input_error.h"
+#include "raycast/simulation.h"
+#include "tools/run/bench_cases.h"
+
+namespace scallop {
+namespace {
+
+BenchSettings smallB1() {
+  BenchSettings s;
+  s.quick = true;
+  s.cases = {"B1"};
+  s.area = 1;
+  s.stamp = false;
+  s.threads = 2;
+  return s;
+}
+
+TEST(BenchRun, OneCaseGivesTheHeightsOfSimulateAndNamesItsStages) {
+  BenchSettings s = smallB1();
+  std::vector<std::string> stages;
+  int64_t lastDone = 0, lastTotal = -1;
+  s.openStage = [&](const std::string& label) -> CellProgress {
+    stages.push_back(label);
+    return [&](int64_t done, int64_t total) { lastDone = done, lastTotal = total; };
+  };
+  const BenchResult r = runBench(s);
+  ASSERT_EQ(r.report["cases"].size(), 1u);
+  const nlohmann::json& c = r.report["cases"][0];
+  EXPECT_EQ(c["name"], "B1");
+  EXPECT_EQ(c["cells"], 100 * 100);
+  EXPECT_EQ(c["threads"], 2);
+  EXPECT_TRUE(c["speedup_2v1"].is_number());
+  EXPECT_EQ(r.report["threads"], 2);
+  EXPECT_TRUE(r.report["stamp"].empty());
+  EXPECT_EQ(r.report["area_mm"], 1.0);
+  EXPECT_TRUE(r.report.contains("scallop_version"));  // newReport()'s document
+
+  // Two runs each at 1 and at 2 threads, alternating, every one with its bar.
+  EXPECT_EQ(stages, (std::vector<std::string>{"B1 (1 thread)", "B1 (2 threads)", "B1 (1 thread)",
+                                              "B1 (2 threads)"}));
+  EXPECT_EQ(lastDone, lastTotal);
+  EXPECT_EQ(lastTotal, 100 * 100);
+
+  BenchCaseOptions options;
+  options.quick = true;
+  options.area = 1;
+  const BenchCase b = makeBenchCase("B1", options);
+  const SimulationResult sim = simulate(b.cutter, b.path, b.stock, b.grid);
+  EXPECT_EQ(c["heights_hash"].get<std::string>(), fmt::format("{:016x}", heightsHash(sim.map)));
+}
+
+TEST(BenchRun, TheStampingBaselineHasItsOwnStage) {
+  BenchSettings s = smallB1();
+  s.stamp = true;
+  s.stampWindow = 0.2;
+  s.threads = 1;
+  int stampStages = 0;
+  s.openStage = [&](const std::string& label) -> CellProgress {
+    if (label == "B1 stamping") ++stampStages;
+    return {};
+  };
+  const BenchResult r = runBench(s);
+  EXPECT_GE(stampStages, 2);  // the step search, then the chosen step once more
+  EXPECT_LE(r.report["stamp"]["B1"]["max_error_mm"].get<double>(), 1e-4);
+  EXPECT_GT(r.report["stamp_ratio"]["B1"].get<double>(), 0);
+}
+
+TEST(BenchRun, AProgressThatThrowsStopsTheRun) {
+  BenchSettings s = smallB1();
+  struct Stop : std::runtime_error {
+    Stop() : std::runtime_error("stop") {}
+  };
+  s.openStage = [](const std::string&) -> CellProgress {
+    return [](int64_t, int64_t) { throw Stop(); };
+  };
+  EXPECT_THROW(runBench(s), Stop);
+}
+
+TEST(BenchRun, BadSettingsAreInputErrors) {
+  BenchSettings s = smallB1();
+  s.cases = {"B9"};
+  EXPECT_THROW(runBench(s), InputError);
+  s = smallB1();
+  s.area = -1;
+  EXPECT_THROW(runBench(s), InputError);
+}
+
+}  // namespace
+}  // namespace scallop
