@@ -11,7 +11,7 @@
 #include <iterator>
 #include <string>
 
-#include "analysis/test_surfaces.h"
+#include "analysis/analytic_surfaces.h"
 #include "base/input_error.h"
 #include "tools/io/stl_io.h"
 
@@ -38,7 +38,7 @@ class GougeRun : public ::testing::Test {
     spec.sizeY = 20;
     spec.facets = facets;
     const std::string file = (dir_ / (std::string(toString(shape)) + ".stl")).string();
-    writeStl(makeTestSurface(spec), file, StlFormat::Binary, "gouge run test");
+    writeStl(makeAnalyticSurface(spec), file, StlFormat::Binary, "gouge run test");
     return file;
   }
 
