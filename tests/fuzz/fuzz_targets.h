@@ -1,5 +1,5 @@
 // What each libFuzzer target (NAME_fuzz, tests/fuzz/fuzz_driver.cpp) feeds its bytes to, shared
-// with tests/tools/fuzz_regression_test.cpp, which replays the seed corpus and every
+// with tests/tools/io/fuzz_regression_test.cpp, which replays the seed corpus and every
 // saved finding (tests/fuzz/regressions/NAME/*) through the same functions in the
 // normal test suite.
 //

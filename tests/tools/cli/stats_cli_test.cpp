@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "cli_harness.h"
+#include "tests/support/cli_harness.h"
 
 namespace scallop::test {
 namespace {

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/io/height_images.h"
 #include "tools/run/tiled_simulation.h"
 

@@ -13,7 +13,7 @@
 #include "analysis/feed_marks.h"
 #include "analysis/profile_metrology.h"
 #include "analysis/triangle_mesh.h"
-#include "tests/tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/io/stl_io.h"
 #include "tools/run/feed_mark_report.h"

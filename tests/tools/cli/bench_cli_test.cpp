@@ -7,7 +7,7 @@
 #include <string>
 
 #include "raycast/simulation.h"
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/run/bench_cases.h"
 
 namespace scallop {

@@ -10,7 +10,7 @@
 
 #include "raycast/simulation.h"
 #include "sweep/raster.h"
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/io/stl_io.h"
 #include "tools/run/job_loader.h"

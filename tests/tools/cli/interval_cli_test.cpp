@@ -19,7 +19,7 @@
 
 #include "analysis/path_interval.h"
 #include "analysis/simulated_interval.h"
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

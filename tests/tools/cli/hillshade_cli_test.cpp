@@ -1,5 +1,5 @@
 // `scallop export --hillshade` as a user runs it: a tilted plane read from a GSF file
-// comes out as the grey level round(255 sin(el + tilt)) (tests/tools/hillshade_test.cpp
+// comes out as the grey level round(255 sin(el + tilt)) (tests/tools/render/hillshade_test.cpp
 // derives it); --region crops; usage errors exit 2 and bad values exit 1, naming the
 // option, with nothing on stdout and no output file.
 #include <OpenImageIO/imageio.h>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/io/height_images.h"
 
 namespace scallop::test {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "raycast/zmap.h"
 #include "tests/support/sampled_field.h"
 #include "tools/io/height_images.h"

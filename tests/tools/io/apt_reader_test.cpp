@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "base/input_error.h"
-#include "tools/input_error_message.h"
+#include "tests/support/input_error_message.h"
 
 namespace scallop {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 
 namespace scallop::test {
 namespace {

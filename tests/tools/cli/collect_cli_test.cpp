@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 
 namespace fs = std::filesystem;
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/tools/bad_input_matrix.h"
+#include "tests/tools/cli/bad_input_matrix.h"
 
 namespace scallop::test {
 namespace {

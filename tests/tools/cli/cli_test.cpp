@@ -12,7 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/io/height_images.h"
 
 namespace fs = std::filesystem;

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "tests/tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 
 namespace scallop::test {
 

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "base/input_error.h"
-#include "cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "raycast/zmap.h"
 #include "tests/support/sampled_field.h"
 #include "tools/io/x3p_writer.h"

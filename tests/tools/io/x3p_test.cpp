@@ -9,7 +9,7 @@
 #include <regex>
 #include <string>
 
-#include "cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "raycast/zmap.h"
 #include "base/input_error.h"
 #include "tools/io/md5.h"

@@ -12,7 +12,7 @@
 
 #include "base/input_error.h"
 #include "tests/sanitizer.h"
-#include "tests/tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/io/tool_path_file.h"
 #include "tools/run/memory_limits.h"

@@ -1,6 +1,6 @@
 // Bad-input matrix, part 1: job files, tool-path files and command-line options
-// (tests/tools/bad_input_matrix.h says what every row must satisfy).
-#include "tests/tools/bad_input_matrix.h"
+// (tests/tools/cli/bad_input_matrix.h says what every row must satisfy).
+#include "tests/tools/cli/bad_input_matrix.h"
 
 #include <string>
 #include <vector>

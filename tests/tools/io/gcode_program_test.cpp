@@ -9,7 +9,7 @@
 #include "base/constants.h"
 #include "sweep/pose_curve.h"
 #include "sweep/tool_path_sweep.h"
-#include "tools/input_error_message.h"
+#include "tests/support/input_error_message.h"
 #include "tools/io/gcode_cycles.h"
 #include "tools/io/gcode_reader.h"
 

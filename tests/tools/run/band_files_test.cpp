@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 
 namespace fs = std::filesystem;
 

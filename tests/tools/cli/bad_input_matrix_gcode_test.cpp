@@ -1,10 +1,10 @@
 // Bad-input matrix, G-code programs and the job keys they use (tools, machine,
 // work_offsets): every row exits 1 with one line naming the file:line or field, and
-// leaves no file (tests/tools/bad_input_matrix.h).
+// leaves no file (tests/tools/cli/bad_input_matrix.h).
 #include <string>
 #include <vector>
 
-#include "tests/tools/bad_input_matrix.h"
+#include "tests/tools/cli/bad_input_matrix.h"
 
 namespace scallop::test {
 namespace {

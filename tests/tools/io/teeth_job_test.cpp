@@ -8,8 +8,8 @@
 #include <string>
 
 #include "base/input_error.h"
-#include "tests/tools/cli_harness.h"
-#include "tools/input_error_message.h"
+#include "tests/support/cli_harness.h"
+#include "tests/support/input_error_message.h"
 #include "tools/io/gcode_reader.h"
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"

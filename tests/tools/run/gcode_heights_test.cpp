@@ -14,7 +14,7 @@
 #include "raycast/simulation.h"
 #include "sweep/brute_force_reference.h"
 #include "base/constants.h"
-#include "tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"
 

@@ -26,7 +26,7 @@
 #include <sstream>
 
 #include "raycast/cell_tiles.h"
-#include "tests/tools/cli_harness.h"
+#include "tests/support/cli_harness.h"
 #include "tools/cli/progress.h"
 
 namespace scallop::test {
