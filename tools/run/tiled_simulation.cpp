@@ -35,22 +35,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kBandBytes = 256.0 * (1 << 20);
-constexpr int64_t kMaxTileRows = 256;
 constexpr double kGiB = double(1ull << 30);
-
-// Bands [first, end) from "K:M".
-std::pair<int64_t, int64_t> parseBands(const std::string& text, const BandLayout& layout) {
-  long long k = -1, m = -1;
-  char tail = 0;
-  const std::string expected =
-      fmt::format("expected K:M with 0 <= K < M <= {} (this job has {} bands of {} rows)",
-                  layout.bands, layout.bands, layout.bandRows);
-  if (std::sscanf(text.c_str(), "%lld:%lld%c", &k, &m, &tail) != 2 || k < 0 || m <= k ||
-      m > layout.bands)
-    throw InputError("--bands", "'" + text + "': " + expected);
-  return {k, m};
-}
 
 // The MD5 of a tool-path file, so that bands of one job agree on its content too.
 std::string fileMd5(const std::string& path) {
@@ -65,63 +50,38 @@ std::string fileMd5(const std::string& path) {
 
 }  // namespace
 
-BandLayout bandLayout(const GridSpec& grid, int64_t requestedRows) {
-  int64_t rows = requestedRows > 0
-                     ? requestedRows
-                     : std::max<int64_t>(1, int64_t(kBandBytes / (8.0 * double(grid.nx))));
-  BandLayout layout;
-  layout.tileHeight = int(std::min(kMaxTileRows, rows));
-  rows = rows / layout.tileHeight * layout.tileHeight;
-  layout.bandRows = std::min(rows, std::max<int64_t>(1, grid.ny));
-  layout.bands = (grid.ny + layout.bandRows - 1) / layout.bandRows;
-  return layout;
-}
-
-bool gridFitsMemory(const Job& job, const std::string& outDir) {
-  const GridSpec grid = job.grid();
-  try {
-    checkGridFitsMemory(grid, job.source + ": grid.spacing");
-    return true;
-  } catch (const InputError& refusal) {
-    // heights.gsf takes 4 bytes a cell; zip-compressed float32 EXR at most about as much.
-    const double need = 8.0 * double(grid.nx) * double(grid.ny);
-    struct statvfs fsInfo {};
-    const double free = ::statvfs(outDir.c_str(), &fsInfo) == 0
-                            ? double(fsInfo.f_bavail) * double(fsInfo.f_frsize)
-                            : 0.0;
-    const bool imageSized = grid.nx <= INT32_MAX && grid.ny <= INT32_MAX;
-    if (need > free || !imageSized) {
-      throw InputError(refusal.where(),
-                       fmt::format("{}; in bands it would need {:.3g} GiB of disk in {}, where "
-                                   "{:.3g} GiB are free{}",
-                                   refusal.reason(), need / kGiB, outDir, free / kGiB,
-                                   imageSized ? "" : ", and more rows or columns than an image"));
-    }
-    const BandLayout layout = bandLayout(grid, 0);
-    std::fprintf(stderr,
-                 "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "
-                 "bands of %lld rows (--tiled)\n",
-                 (long long)grid.nx, (long long)grid.ny, (long long)layout.bands,
-                 (long long)layout.bandRows);
-    return false;
+void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::string& outDir) {
+  const GridSpec& grid = plan.grid;
+  // heights.gsf takes 4 bytes a cell; zip-compressed float32 EXR at most about as much.
+  const double need = 8.0 * double(grid.nx) * double(grid.ny);
+  struct statvfs fsInfo {};
+  const double free = ::statvfs(outDir.c_str(), &fsInfo) == 0
+                          ? double(fsInfo.f_bavail) * double(fsInfo.f_frsize)
+                          : 0.0;
+  const bool imageSized = grid.nx <= INT32_MAX && grid.ny <= INT32_MAX;
+  if (need > free || !imageSized) {
+    requireRunFitsMemory(
+        job, grid, plan.memory, true,
+        fmt::format(
+            "; in bands it would need {:.3g} GiB of disk in {}, where {:.3g} GiB are free{}",
+            need / kGiB, outDir, free / kGiB,
+            imageSized ? "" : ", and more rows or columns than an image"));
   }
+  std::fprintf(stderr,
+               "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "
+               "bands of %lld rows (--tiled)\n",
+               (long long)grid.nx, (long long)grid.ny, (long long)plan.layout.bands,
+               (long long)plan.layout.bandRows);
 }
 
-RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
+RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
+                              const RunSettings& settings) {
   const auto tStart = Clock::now();
-  const GridSpec grid = job.grid();
-  const BandLayout layout = bandLayout(grid, settings.tileRows);
-  const bool partial = !settings.bands.empty();
-  const auto [first, end] =
-      partial ? parseBands(settings.bands, layout) : std::pair<int64_t, int64_t>{0, layout.bands};
-  if (!settings.quiet)
-    std::fprintf(stderr,
-                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm, "
-                 "bands %lld..%lld of %lld (%lld rows each)\n",
-                 job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
-                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing,
-                 (long long)first, (long long)end - 1, (long long)layout.bands,
-                 (long long)layout.bandRows);
+  const GridSpec& grid = plan.grid;
+  const BandLayout& layout = plan.layout;
+  const bool partial = plan.partial;
+  const int64_t first = plan.firstBand, end = plan.endBand;
+  if (!settings.quiet) std::fprintf(stderr, "scallop: %s\n", plan.banner.c_str());
 
   // Before the computation: a leftover as large as a band could keep this run's own
   // band from fitting on the disk (band_files.h says why removing them is safe).
@@ -131,8 +91,8 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
         std::fprintf(stderr, "scallop: removed %s, left by a run of its band that was killed\n",
                      leftover.c_str());
 
-  int64_t totalCells = 0, doneCells = 0;
-  for (int64_t b = first; b < end; ++b) totalCells += layout.bandGrid(b, grid).cells();
+  const int64_t totalCells = plan.cellsToCompute();
+  int64_t doneCells = 0;
   SimulationOptions options;
   options.cutting = job.cutting;
   options.cast.progress = [&](int64_t done, int64_t) {

@@ -21,40 +21,23 @@
 #include "raycast/zmap.h"
 #include "tools/io/height_images.h"
 #include "tools/run/feed_mark_report.h"
+#include "tools/run/simulation_plan.h"
 #include "tools/run/simulation_run.h"
 
 namespace scallop {
 
 struct Job;
 
-struct BandLayout {
-  int64_t bandRows = 0;  // image rows per band; the last band may have fewer
-  int64_t bands = 0;
-  int tileHeight = 0;  // OpenEXR tile rows; bandRows is a multiple of it
-
-  int64_t firstRow(int64_t band) const { return band * bandRows; }
-  int64_t endRow(int64_t band, const GridSpec& g) const {
-    return std::min(g.ny, (band + 1) * bandRows);
-  }
-  // The band's rows as a sub-grid of `g` (ZMap order: j = 0 is its smallest y).
-  GridSpec bandGrid(int64_t band, const GridSpec& g) const {
-    return g.rows(g.ny - endRow(band, g), g.ny - firstRow(band));
-  }
-};
-
-// Bands of `requestedRows` rows (0: as many as fit in 256 MB of doubles), rounded
-// down to a whole number of OpenEXR tiles of at most 256 rows.
-BandLayout bandLayout(const GridSpec& grid, int64_t requestedRows);
-
-// True when the job's map fits in memory. Otherwise checks that the tiled outputs fit
-// on the disk holding `outDir` (throwing the memory refusal, with the disk numbers
-// added, when they do not), says on stderr that the map is computed in bands, and
-// returns false.
-bool gridFitsMemory(const Job& job, const std::string& outDir);
+// Checks, for a run in bands that were not asked for (its map does not fit in memory),
+// that the outputs fit on the disk holding `outDir`, throwing the memory refusal with
+// the disk numbers added when they do not, and says on stderr that the map is computed
+// in bands.
+void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::string& outDir);
 
 // A simulation run in bands: all of them into the usual outputs, or with
 // settings.bands = "K:M" only bands K..M-1 into band files.
-RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings);
+RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
+                              const RunSettings& settings);
 
 // Streams bands, in order, into DIR/heights.exr, heights.gsf, preview.png and
 // report.json. `run` describes the run (band files carry it, see tiled_simulation.cpp);
