@@ -103,23 +103,39 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
   options.cast.progress(0, 0);  // a Ctrl-C during the build stops here (as in simulate())
   const SceneStats sceneStats = scene->stats();
 
-  // Everything a band file must agree on with the other bands of its run.
-  json run = {{"scallop_version", kScallopVersion},
-              {"job_source", job.source},
-              {"inputs", jobToJson(job)},
-              {"title", simulationTitle(job)},
-              {"grid", gridToJson(grid)},
-              {"band_rows", layout.bandRows},
-              {"bands", layout.bands},
-              {"exr_tile_rows", layout.tileHeight},
-              {"cutting_moves", job.path.cuttingMoves()},
-              {"swept_segments", sceneStats.segments},
-              {"culling_tiles", sceneStats.tiles}};
-  if (!job.isRaster && partial) run["path_file_md5"] = fileMd5(job.pathFile);
-  if (job.cutting.teeth()) run["feed_marks_plan"] = feedMarkPlan(job, grid);
   std::unique_ptr<TiledOutput> output;
-  if (!partial) {
-    output = std::make_unique<TiledOutput>(run, settings.outDir);
+  json run;
+  if (partial) {
+    // Everything a band file must agree on with the other bands of its run.
+    run = {{"scallop_version", kScallopVersion},
+           {"job_source", job.source},
+           {"inputs", jobToJson(job)},
+           {"title", simulationTitle(job)},
+           {"grid", gridToJson(grid)},
+           {"band_rows", layout.bandRows},
+           {"bands", layout.bands},
+           {"exr_tile_rows", layout.tileHeight},
+           {"cutting_moves", job.path.cuttingMoves()},
+           {"swept_segments", sceneStats.segments},
+           {"culling_tiles", sceneStats.tiles}};
+    if (!job.isRaster) run["path_file_md5"] = fileMd5(job.pathFile);
+    if (job.cutting.teeth()) run["feed_marks_plan"] = feedMarkPlan(job, grid);
+  } else {
+    TiledRun whole;
+    whole.record.jobSource = job.source;
+    whole.record.inputs = jobToJson(job);
+    whole.record.grid = grid;
+    whole.record.cuttingMoves = int64_t(job.path.cuttingMoves());
+    whole.record.sweptSegments = int64_t(sceneStats.segments);
+    whole.record.cullingTiles = int64_t(sceneStats.tiles);
+    whole.record.tiled = {{"bands", layout.bands},
+                          {"band_rows", layout.bandRows},
+                          {"exr_tile_rows", layout.tileHeight}};
+    whole.title = simulationTitle(job);
+    whole.exrTileRows = layout.tileHeight;
+    whole.uncutHeight = job.stock.max.z;
+    if (job.cutting.teeth()) whole.feedMarksPlan = feedMarkPlan(job, grid);
+    output = std::make_unique<TiledOutput>(whole, settings.outDir);
     if (!job.isRaster) output->setPathFile(pathFileReport(job, settings.quiet));
   }
 
@@ -159,13 +175,30 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
           output->finish(sceneStats.buildSeconds, secondsSince(tStart), threads)};
 }
 
-TiledOutput::TiledOutput(const json& run, const std::string& dir)
+TiledRun tiledRunFromBands(const json& run) {
+  TiledRun out;
+  out.record.jobSource = run.at("job_source").get<std::string>();
+  out.record.inputs = run.at("inputs");
+  out.record.grid = gridFromJson(run.at("grid"));
+  out.record.cuttingMoves = run.at("cutting_moves").get<int64_t>();
+  out.record.sweptSegments = run.at("swept_segments").get<int64_t>();
+  out.record.cullingTiles = run.at("culling_tiles").get<int64_t>();
+  out.record.tiled = {{"bands", run.at("bands")},
+                      {"band_rows", run.at("band_rows")},
+                      {"exr_tile_rows", run.at("exr_tile_rows")}};
+  out.title = run.at("title").get<std::string>();
+  out.exrTileRows = run.at("exr_tile_rows").get<int>();
+  out.uncutHeight = out.record.inputs.at("stock").at("max").at(2).get<double>();
+  if (run.contains("feed_marks_plan")) out.feedMarksPlan = run.at("feed_marks_plan");
+  return out;
+}
+
+TiledOutput::TiledOutput(const TiledRun& run, const std::string& dir)
     : run_(run),
       dir_(dir),
-      grid_(gridFromJson(run.at("grid"))),
+      grid_(run.record.grid),
       writer_(grid_, (fs::path(dir) / "heights.exr").string(),
-              (fs::path(dir) / "heights.gsf").string(), run.at("title").get<std::string>(),
-              run.at("exr_tile_rows").get<int>()) {
+              (fs::path(dir) / "heights.gsf").string(), run.title, run.exrTileRows) {
   // The same reduction as writePreviewPng's for the whole map: blocks of k x k cells
   // aligned at cell (0, 0), each keeping its minimum.
   const int64_t longSide = std::max(grid_.nx, grid_.ny);
@@ -176,8 +209,8 @@ TiledOutput::TiledOutput(const json& run, const std::string& dir)
   pooled.nx = (grid_.nx + poolFactor_ - 1) / poolFactor_;
   pooled.ny = (grid_.ny + poolFactor_ - 1) / poolFactor_;
   preview_ = ZMap(pooled, HUGE_VAL);
-  if (run.contains("feed_marks_plan"))
-    feedMarks_ = std::make_unique<FeedMarkSampler>(run.at("feed_marks_plan"), grid_);
+  if (!run.feedMarksPlan.is_null())
+    feedMarks_ = std::make_unique<FeedMarkSampler>(run.feedMarksPlan, grid_);
 }
 
 void TiledOutput::add(const ZMap& band, const json& stats) {
@@ -215,18 +248,12 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   const auto t0 = Clock::now();
   writer_.close();
   PreviewOptions preview;
-  preview.title = previewTitle(run_.at("title").get<std::string>());
-  preview.uncutHeight = run_.at("inputs").at("stock").at("max").at(2).get<double>();
+  preview.title = previewTitle(run_.title);
+  preview.uncutHeight = run_.uncutHeight;
   writePreviewPng(preview_, (fs::path(dir_) / "preview.png").string(), preview);
   writeSeconds_ += secondsSince(t0);
 
-  RunRecord record;
-  record.jobSource = run_.at("job_source").get<std::string>();
-  record.inputs = run_.at("inputs");
-  record.grid = grid_;
-  record.cuttingMoves = run_.at("cutting_moves").get<int64_t>();
-  record.sweptSegments = run_.at("swept_segments").get<int64_t>();
-  record.cullingTiles = run_.at("culling_tiles").get<int64_t>();
+  RunRecord record = run_.record;
   record.requestedThreads = threads;
   record.sceneSeconds = sceneSeconds;
   record.castSeconds = castSeconds_;
@@ -245,9 +272,6 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
       record.surfaceStats["notes"].get<std::string>() +
       "; computed band by band: heights from the mean (no plane levelling) and no Sa. "
       "`scallop stats heights.gsf` gives all of them from the file";
-  record.tiled = {{"bands", run_.at("bands")},
-                  {"band_rows", run_.at("band_rows")},
-                  {"exr_tile_rows", run_.at("exr_tile_rows")}};
   record.pathFile = pathFile_;
   if (feedMarks_) record.feedMarks = feedMarks_->report();
   record.totalSeconds = totalSeconds + secondsSince(t0);

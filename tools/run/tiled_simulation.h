@@ -21,6 +21,7 @@
 #include "raycast/zmap.h"
 #include "tools/io/height_images.h"
 #include "tools/run/feed_mark_report.h"
+#include "tools/run/report.h"
 #include "tools/run/simulation_plan.h"
 #include "tools/run/simulation_run.h"
 
@@ -39,19 +40,34 @@ void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::
 RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
                               const RunSettings& settings);
 
+// What TiledOutput needs of a run besides its bands: made from the plan by the run
+// itself, or by merge from the "run" description that band files carry.
+struct TiledRun {
+  // The report's description of the run: jobSource, inputs, grid, cuttingMoves,
+  // sweptSegments, cullingTiles and tiled ({"bands", "band_rows", "exr_tile_rows"}).
+  RunRecord record;
+  std::string title;             // simulationTitle
+  int exrTileRows = 0;           // BandLayout::tileHeight
+  double uncutHeight = 0;        // the stock's top, mm: the preview's uncut grey
+  nlohmann::json feedMarksPlan;  // a teeth run's feedMarkPlan, else null
+};
+
+// The TiledRun of a band file's "run" description (merge).
+TiledRun tiledRunFromBands(const nlohmann::json& run);
+
 // Streams bands, in order, into DIR/heights.exr, heights.gsf, preview.png and
-// report.json. `run` describes the run (band files carry it, see tiled_simulation.cpp);
-// each band comes with its statistics, and finish() returns report.json's content.
+// report.json. Each band comes with its statistics, and finish() returns report.json's
+// content.
 class TiledOutput {
  public:
-  TiledOutput(const nlohmann::json& run, const std::string& dir);
+  TiledOutput(const TiledRun& run, const std::string& dir);
   void add(const ZMap& band, const nlohmann::json& bandStats);
   nlohmann::json finish(double sceneSeconds, double totalSeconds, int threads);
   // Before finish(): the report's "path_file" section (pathFileReport), if any.
   void setPathFile(const nlohmann::json& pathFile) { pathFile_ = pathFile; }
 
  private:
-  nlohmann::json run_;
+  TiledRun run_;
   std::string dir_;
   GridSpec grid_;
   HeightStreamWriter writer_;
