@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 
 #include <cstdio>
+#include <tuple>
+#include <utility>
 
 #include "base/input_error.h"
 #include "tools/io/job.h"
