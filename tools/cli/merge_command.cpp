@@ -90,7 +90,7 @@ int runMerge(const MergeArgs& args) {
   BandLayout layout;
   layout.bandRows = run.at("band_rows").get<int64_t>();
   layout.bands = bands;
-  TiledOutput output(run, args.dir);
+  TiledOutput output(tiledRunFromBands(run), args.dir);
   double sceneSeconds = 0;
   int threads = 0;
   for (int64_t b = 0; b < bands; ++b) {

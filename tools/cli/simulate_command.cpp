@@ -13,6 +13,7 @@
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"
 #include "tools/run/report.h"
+#include "tools/run/simulation_plan.h"
 #include "tools/run/tiled_simulation.h"
 
 namespace scallop {
@@ -90,8 +91,12 @@ Job loadSimulateJob(const SimulateArgs& args) {
 // that a scheduler script can split the bands between its tasks (scripts/slurm-bands.sh).
 int printBands(const SimulateArgs& args) {
   const Job job = loadSimulateJob(args);
-  const GridSpec grid = job.grid();
-  const BandLayout layout = bandLayout(grid, args.run.tileRows);
+  RunSettings inBands = args.run;  // the layout of every band, whichever are asked for
+  inBands.tiled = true;
+  inBands.bands.clear();
+  const SimulationPlan plan = planSimulation(job, inBands);
+  const GridSpec& grid = plan.grid;
+  const BandLayout& layout = plan.layout;
   const json doc = {{"bands", layout.bands},
                     {"band_rows", layout.bandRows},
                     {"rows", grid.ny},

@@ -5,8 +5,8 @@
 #include <iomanip>
 #include <sstream>
 
-#include "raycast/simulation.h"
 #include "base/input_error.h"
+#include "raycast/simulation.h"
 #include "tools/io/job.h"
 
 namespace scallop {
@@ -22,21 +22,62 @@ double availableMemoryBytes() {
   return available > 0 ? available : 8.0 * (1ull << 30);
 }
 
-void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
+namespace {
+
+double mapBytes(const GridSpec& grid) {
   // Heights are held in double, plus one float32 row buffer per image while writing.
-  const double cells = double(grid.nx) * double(grid.ny);
-  const double need = cells * (sizeof(double) + sizeof(float));
+  return double(grid.nx) * double(grid.ny) * (sizeof(double) + sizeof(float));
+}
+
+std::string mapRefusal(const GridSpec& grid, double need, double available) {
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << "a " << grid.nx << " x " << grid.ny << " grid needs " << need / double(1ull << 30)
+      << " GiB (" << std::fixed << std::setprecision(0) << need << " bytes) of memory, but only "
+      << std::defaultfloat << std::setprecision(3) << available / double(1ull << 30)
+      << " GiB are available; use a larger spacing, a smaller stock, or --method exact with "
+         "--tiled (bands of rows, bounded memory)";
+  return msg.str();
+}
+
+std::string sceneRefusal(size_t moves, double need, double available) {
+  std::ostringstream msg;
+  msg << "the exact simulation of " << moves << " cutting moves needs about "
+      << std::setprecision(need < 1e15 ? 15 : 3) << need << " bytes (" << std::fixed
+      << std::setprecision(1) << need / double(1ull << 30)
+      << " GiB) of memory for its culling scene, but only " << available / double(1ull << 30)
+      << " GiB are available; split the path into several jobs (--tiled bounds only the "
+         "height map's memory, not the scene's)";
+  return msg.str();
+}
+
+}  // namespace
+
+RunMemory estimateRunMemory(const Job& job, const GridSpec& grid, bool exact,
+                            double availableBytes) {
+  RunMemory memory;
+  memory.mapBytes = mapBytes(grid);
+  if (exact)
+    memory.sceneBytes = estimateSceneBytes(job.cutter, job.path, job.stock.max.z,
+                                           &memory.cuttingMoves, job.cutting);
+  memory.availableBytes = availableBytes;
+  return memory;
+}
+
+void requireRunFitsMemory(const Job& job, const GridSpec& grid, const RunMemory& memory,
+                          bool wholeMap, const std::string& whyNotInBands) {
+  if (!memory.sceneFits())
+    throw InputError(job.source + ": path",
+                     sceneRefusal(memory.cuttingMoves, memory.sceneBytes, memory.availableBytes));
+  if (wholeMap && !memory.mapFits())
+    throw InputError(job.source + ": grid.spacing",
+                     mapRefusal(grid, memory.mapBytes, memory.availableBytes) + whyNotInBands);
+}
+
+void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
+  const double need = mapBytes(grid);
   const double available = availableMemoryBytes();
-  if (need > 0.8 * available) {
-    std::ostringstream msg;
-    msg.precision(3);
-    msg << "a " << grid.nx << " x " << grid.ny << " grid needs " << need / double(1ull << 30)
-        << " GiB (" << std::fixed << std::setprecision(0) << need << " bytes) of memory, but only "
-        << std::defaultfloat << std::setprecision(3) << available / double(1ull << 30)
-        << " GiB are available; use a larger spacing, a smaller stock, or --method exact with "
-           "--tiled (bands of rows, bounded memory)";
-    throw InputError(field, msg.str());
-  }
+  if (need > 0.8 * available) throw InputError(field, mapRefusal(grid, need, available));
 }
 
 // makeRaster holds every move (up to its own limit of 5e7): refuse, before generating
@@ -66,22 +107,8 @@ void checkRasterFitsMemory(const Job& job) {
 }
 
 void checkSceneFitsMemory(const Job& job) {
-  // The scene's own estimate (raycast/simulation.h), made from the moves before anything
-  // is built: it errs high, never low, so what it accepts is never killed for memory.
-  size_t moves = 0;
-  const double need =
-      estimateSceneBytes(job.cutter, job.path, job.stock.max.z, &moves, job.cutting);
-  const double available = availableMemoryBytes();
-  if (need > 0.8 * available) {
-    std::ostringstream msg;
-    msg << "the exact simulation of " << moves << " cutting moves needs about "
-        << std::setprecision(need < 1e15 ? 15 : 3) << need << " bytes (" << std::fixed
-        << std::setprecision(1) << need / double(1ull << 30)
-        << " GiB) of memory for its culling scene, but only " << available / double(1ull << 30)
-        << " GiB are available; split the path into several jobs (--tiled bounds only the "
-           "height map's memory, not the scene's)";
-    throw InputError(job.source + ": path", msg.str());
-  }
+  const RunMemory memory = estimateRunMemory(job, GridSpec(), true, availableMemoryBytes());
+  requireRunFitsMemory(job, GridSpec(), memory, false);
 }
 
 }  // namespace scallop

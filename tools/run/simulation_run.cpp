@@ -16,6 +16,7 @@
 #include "tools/run/memory_limits.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
+#include "tools/run/simulation_plan.h"
 #include "tools/run/stopwatch.h"
 #include "tools/run/tiled_simulation.h"
 
@@ -32,17 +33,12 @@ struct InMemoryHeights {
   json pathFile;           // pathFileReport() for a job with a path file
 };
 
-InMemoryHeights computeHeights(const Job& job, const RunSettings& settings) {
-  const GridSpec grid = job.grid();
+InMemoryHeights computeHeights(const Job& job, const SimulationPlan& plan,
+                               const RunSettings& settings) {
+  const GridSpec& grid = plan.grid;
   InMemoryHeights out;
   out.pathFile = job.isRaster ? json() : pathFileReport(job, settings.quiet);
-  if (!settings.quiet)
-    std::fprintf(stderr,
-                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g "
-                 "mm%s\n",
-                 job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
-                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing,
-                 job.cutting.teeth() ? ", teeth" : "");
+  if (!settings.quiet) std::fprintf(stderr, "scallop: %s\n", plan.banner.c_str());
 
   SimulationOptions options;
   options.cast.progress = settings.progress;
@@ -67,12 +63,13 @@ InMemoryHeights computeHeights(const Job& job, const RunSettings& settings) {
 
 // The record of an in-memory run, but for the design section and the timings of
 // writing and in all.
-RunRecord inMemoryRecord(const Job& job, const RunSettings& settings, const InMemoryHeights& h) {
+RunRecord inMemoryRecord(const Job& job, const SimulationPlan& plan, const RunSettings& settings,
+                         const InMemoryHeights& h) {
   const SimulationResult& sim = h.sim;
   RunRecord run;
   run.jobSource = job.source;
   run.inputs = jobToJson(job);
-  run.grid = job.grid();
+  run.grid = plan.grid;
   run.method = settings.method;
   run.stampStepMm = h.stampStepMm;
   run.cuttingMoves = int64_t(job.path.cuttingMoves());
@@ -92,8 +89,9 @@ RunRecord inMemoryRecord(const Job& job, const RunSettings& settings, const InMe
 }
 
 // The whole map in memory: heights, then the four outputs and the design comparison.
-json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point tStart) {
-  const InMemoryHeights h = computeHeights(job, settings);
+json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& settings,
+                 Clock::time_point tStart) {
+  const InMemoryHeights h = computeHeights(job, plan, settings);
   const ZMap& map = h.sim.map;
 
   // --- Outputs, each written to a temporary name and renamed when complete. ---------
@@ -108,7 +106,7 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
   preview.uncutHeight = job.stock.max.z;  // the map's initial height (raycast/simulation.h)
   writePreviewPng(map, (dir / "preview.png").string(), preview);
 
-  RunRecord run = inMemoryRecord(job, settings, h);
+  RunRecord run = inMemoryRecord(job, plan, settings, h);
   run.design = job.design ? designReport(job, map, settings.outDir, settings.quiet) : json();
   run.writeSeconds = secondsSince(tWrite);
   run.totalSeconds = secondsSince(tStart);
@@ -117,7 +115,8 @@ json runInMemory(const Job& job, const RunSettings& settings, Clock::time_point 
   return report;
 }
 
-// What runSimulation refuses before the long computation, whatever the outputs.
+// What runSimulation refuses before the long computation, whatever the outputs and
+// the memory.
 void checkRunnable(const Job& job, bool exact, bool banded) {
   if (job.cutting.teeth() && !exact)
     throw InputError("--method",
@@ -128,7 +127,6 @@ void checkRunnable(const Job& job, bool exact, bool banded) {
     throw InputError(job.source + ": design",
                      "the design comparison needs --method exact and the whole map in memory "
                      "(not --tiled, --tile-rows or --bands)");
-  if (exact) checkSceneFitsMemory(job);
 }
 
 }  // namespace
@@ -152,27 +150,35 @@ RunOutcome runSimulation(const Job& job, const RunSettings& settings) {
   const bool banded = settings.tiled || settings.tileRows > 0 || !settings.bands.empty();
   // Fail before the long computation, not after it.
   checkRunnable(job, exact, banded);
-  ensureWritableDirectory(settings.outDir);
-
   if (!exact && banded)
     throw InputError("--method", "bands (--tiled, --tile-rows, --bands) need --method exact");
-  if (banded) return runTiledSimulation(job, settings);
-  if (exact && !gridFitsMemory(job, settings.outDir)) {
+  const SimulationPlan plan = planSimulation(job, settings);
+  requireRunFitsMemory(job, plan.grid, plan.memory, false);
+  ensureWritableDirectory(settings.outDir);
+
+  if (plan.inBands && !plan.bandsAsked) {
     if (job.design)
       throw InputError(job.source + ": design",
                        "the map does not fit in memory, which the design comparison needs; use a "
                        "larger grid.spacing");
-    return runTiledSimulation(job, settings);
+    requireBandsFitDisk(job, plan, settings.outDir);
   }
-  return {RunOutcome::Kind::kInMemory, runInMemory(job, settings, tStart)};
+  if (plan.inBands) return runTiledSimulation(job, plan, settings);
+  return {RunOutcome::Kind::kInMemory, runInMemory(job, plan, settings, tStart)};
 }
 
 ComputedSimulation computeSimulation(const Job& job, const RunSettings& settings) {
   const auto tStart = Clock::now();
   checkRunnable(job, settings.method == "exact", false);
-  checkGridFitsMemory(job.grid(), job.source + ": grid.spacing");
-  InMemoryHeights h = computeHeights(job, settings);
-  RunRecord run = inMemoryRecord(job, settings, h);
+  // The whole map in memory, whatever bands the settings ask for.
+  RunSettings whole = settings;
+  whole.tiled = false;
+  whole.tileRows = 0;
+  whole.bands.clear();
+  const SimulationPlan plan = planSimulation(job, whole);
+  requireRunFitsMemory(job, plan.grid, plan.memory, true);
+  InMemoryHeights h = computeHeights(job, plan, settings);
+  RunRecord run = inMemoryRecord(job, plan, settings, h);
   // No outDir: the comparison without its picture.
   run.design = job.design ? designReport(job, h.sim.map, "", settings.quiet) : json();
   run.totalSeconds = secondsSince(tStart);

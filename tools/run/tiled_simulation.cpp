@@ -35,22 +35,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kBandBytes = 256.0 * (1 << 20);
-constexpr int64_t kMaxTileRows = 256;
 constexpr double kGiB = double(1ull << 30);
-
-// Bands [first, end) from "K:M".
-std::pair<int64_t, int64_t> parseBands(const std::string& text, const BandLayout& layout) {
-  long long k = -1, m = -1;
-  char tail = 0;
-  const std::string expected =
-      fmt::format("expected K:M with 0 <= K < M <= {} (this job has {} bands of {} rows)",
-                  layout.bands, layout.bands, layout.bandRows);
-  if (std::sscanf(text.c_str(), "%lld:%lld%c", &k, &m, &tail) != 2 || k < 0 || m <= k ||
-      m > layout.bands)
-    throw InputError("--bands", "'" + text + "': " + expected);
-  return {k, m};
-}
 
 // The MD5 of a tool-path file, so that bands of one job agree on its content too.
 std::string fileMd5(const std::string& path) {
@@ -65,63 +50,38 @@ std::string fileMd5(const std::string& path) {
 
 }  // namespace
 
-BandLayout bandLayout(const GridSpec& grid, int64_t requestedRows) {
-  int64_t rows = requestedRows > 0
-                     ? requestedRows
-                     : std::max<int64_t>(1, int64_t(kBandBytes / (8.0 * double(grid.nx))));
-  BandLayout layout;
-  layout.tileHeight = int(std::min(kMaxTileRows, rows));
-  rows = rows / layout.tileHeight * layout.tileHeight;
-  layout.bandRows = std::min(rows, std::max<int64_t>(1, grid.ny));
-  layout.bands = (grid.ny + layout.bandRows - 1) / layout.bandRows;
-  return layout;
-}
-
-bool gridFitsMemory(const Job& job, const std::string& outDir) {
-  const GridSpec grid = job.grid();
-  try {
-    checkGridFitsMemory(grid, job.source + ": grid.spacing");
-    return true;
-  } catch (const InputError& refusal) {
-    // heights.gsf takes 4 bytes a cell; zip-compressed float32 EXR at most about as much.
-    const double need = 8.0 * double(grid.nx) * double(grid.ny);
-    struct statvfs fsInfo {};
-    const double free = ::statvfs(outDir.c_str(), &fsInfo) == 0
-                            ? double(fsInfo.f_bavail) * double(fsInfo.f_frsize)
-                            : 0.0;
-    const bool imageSized = grid.nx <= INT32_MAX && grid.ny <= INT32_MAX;
-    if (need > free || !imageSized) {
-      throw InputError(refusal.where(),
-                       fmt::format("{}; in bands it would need {:.3g} GiB of disk in {}, where "
-                                   "{:.3g} GiB are free{}",
-                                   refusal.reason(), need / kGiB, outDir, free / kGiB,
-                                   imageSized ? "" : ", and more rows or columns than an image"));
-    }
-    const BandLayout layout = bandLayout(grid, 0);
-    std::fprintf(stderr,
-                 "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "
-                 "bands of %lld rows (--tiled)\n",
-                 (long long)grid.nx, (long long)grid.ny, (long long)layout.bands,
-                 (long long)layout.bandRows);
-    return false;
+void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::string& outDir) {
+  const GridSpec& grid = plan.grid;
+  // heights.gsf takes 4 bytes a cell; zip-compressed float32 EXR at most about as much.
+  const double need = 8.0 * double(grid.nx) * double(grid.ny);
+  struct statvfs fsInfo {};
+  const double free = ::statvfs(outDir.c_str(), &fsInfo) == 0
+                          ? double(fsInfo.f_bavail) * double(fsInfo.f_frsize)
+                          : 0.0;
+  const bool imageSized = grid.nx <= INT32_MAX && grid.ny <= INT32_MAX;
+  if (need > free || !imageSized) {
+    requireRunFitsMemory(
+        job, grid, plan.memory, true,
+        fmt::format(
+            "; in bands it would need {:.3g} GiB of disk in {}, where {:.3g} GiB are free{}",
+            need / kGiB, outDir, free / kGiB,
+            imageSized ? "" : ", and more rows or columns than an image"));
   }
+  std::fprintf(stderr,
+               "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "
+               "bands of %lld rows (--tiled)\n",
+               (long long)grid.nx, (long long)grid.ny, (long long)plan.layout.bands,
+               (long long)plan.layout.bandRows);
 }
 
-RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
+RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
+                              const RunSettings& settings) {
   const auto tStart = Clock::now();
-  const GridSpec grid = job.grid();
-  const BandLayout layout = bandLayout(grid, settings.tileRows);
-  const bool partial = !settings.bands.empty();
-  const auto [first, end] =
-      partial ? parseBands(settings.bands, layout) : std::pair<int64_t, int64_t>{0, layout.bands};
-  if (!settings.quiet)
-    std::fprintf(stderr,
-                 "scallop: %s: %s cutter R=%g mm, %zu cutting moves, %lld x %lld cells of %g mm, "
-                 "bands %lld..%lld of %lld (%lld rows each)\n",
-                 job.source.c_str(), toString(job.cutter.type), job.cutter.radius,
-                 job.path.cuttingMoves(), (long long)grid.nx, (long long)grid.ny, grid.spacing,
-                 (long long)first, (long long)end - 1, (long long)layout.bands,
-                 (long long)layout.bandRows);
+  const GridSpec& grid = plan.grid;
+  const BandLayout& layout = plan.layout;
+  const bool partial = plan.partial;
+  const int64_t first = plan.firstBand, end = plan.endBand;
+  if (!settings.quiet) std::fprintf(stderr, "scallop: %s\n", plan.banner.c_str());
 
   // Before the computation: a leftover as large as a band could keep this run's own
   // band from fitting on the disk (band_files.h says why removing them is safe).
@@ -131,8 +91,8 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
         std::fprintf(stderr, "scallop: removed %s, left by a run of its band that was killed\n",
                      leftover.c_str());
 
-  int64_t totalCells = 0, doneCells = 0;
-  for (int64_t b = first; b < end; ++b) totalCells += layout.bandGrid(b, grid).cells();
+  const int64_t totalCells = plan.cellsToCompute();
+  int64_t doneCells = 0;
   SimulationOptions options;
   options.cutting = job.cutting;
   options.cast.progress = [&](int64_t done, int64_t) {
@@ -143,23 +103,39 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
   options.cast.progress(0, 0);  // a Ctrl-C during the build stops here (as in simulate())
   const SceneStats sceneStats = scene->stats();
 
-  // Everything a band file must agree on with the other bands of its run.
-  json run = {{"scallop_version", kScallopVersion},
-              {"job_source", job.source},
-              {"inputs", jobToJson(job)},
-              {"title", simulationTitle(job)},
-              {"grid", gridToJson(grid)},
-              {"band_rows", layout.bandRows},
-              {"bands", layout.bands},
-              {"exr_tile_rows", layout.tileHeight},
-              {"cutting_moves", job.path.cuttingMoves()},
-              {"swept_segments", sceneStats.segments},
-              {"culling_tiles", sceneStats.tiles}};
-  if (!job.isRaster && partial) run["path_file_md5"] = fileMd5(job.pathFile);
-  if (job.cutting.teeth()) run["feed_marks_plan"] = feedMarkPlan(job, grid);
   std::unique_ptr<TiledOutput> output;
-  if (!partial) {
-    output = std::make_unique<TiledOutput>(run, settings.outDir);
+  json run;
+  if (partial) {
+    // Everything a band file must agree on with the other bands of its run.
+    run = {{"scallop_version", kScallopVersion},
+           {"job_source", job.source},
+           {"inputs", jobToJson(job)},
+           {"title", simulationTitle(job)},
+           {"grid", gridToJson(grid)},
+           {"band_rows", layout.bandRows},
+           {"bands", layout.bands},
+           {"exr_tile_rows", layout.tileHeight},
+           {"cutting_moves", job.path.cuttingMoves()},
+           {"swept_segments", sceneStats.segments},
+           {"culling_tiles", sceneStats.tiles}};
+    if (!job.isRaster) run["path_file_md5"] = fileMd5(job.pathFile);
+    if (job.cutting.teeth()) run["feed_marks_plan"] = feedMarkPlan(job, grid);
+  } else {
+    TiledRun whole;
+    whole.record.jobSource = job.source;
+    whole.record.inputs = jobToJson(job);
+    whole.record.grid = grid;
+    whole.record.cuttingMoves = int64_t(job.path.cuttingMoves());
+    whole.record.sweptSegments = int64_t(sceneStats.segments);
+    whole.record.cullingTiles = int64_t(sceneStats.tiles);
+    whole.record.tiled = {{"bands", layout.bands},
+                          {"band_rows", layout.bandRows},
+                          {"exr_tile_rows", layout.tileHeight}};
+    whole.title = simulationTitle(job);
+    whole.exrTileRows = layout.tileHeight;
+    whole.uncutHeight = job.stock.max.z;
+    if (job.cutting.teeth()) whole.feedMarksPlan = feedMarkPlan(job, grid);
+    output = std::make_unique<TiledOutput>(whole, settings.outDir);
     if (!job.isRaster) output->setPathFile(pathFileReport(job, settings.quiet));
   }
 
@@ -199,13 +175,30 @@ RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings) {
           output->finish(sceneStats.buildSeconds, secondsSince(tStart), threads)};
 }
 
-TiledOutput::TiledOutput(const json& run, const std::string& dir)
+TiledRun tiledRunFromBands(const json& run) {
+  TiledRun out;
+  out.record.jobSource = run.at("job_source").get<std::string>();
+  out.record.inputs = run.at("inputs");
+  out.record.grid = gridFromJson(run.at("grid"));
+  out.record.cuttingMoves = run.at("cutting_moves").get<int64_t>();
+  out.record.sweptSegments = run.at("swept_segments").get<int64_t>();
+  out.record.cullingTiles = run.at("culling_tiles").get<int64_t>();
+  out.record.tiled = {{"bands", run.at("bands")},
+                      {"band_rows", run.at("band_rows")},
+                      {"exr_tile_rows", run.at("exr_tile_rows")}};
+  out.title = run.at("title").get<std::string>();
+  out.exrTileRows = run.at("exr_tile_rows").get<int>();
+  out.uncutHeight = out.record.inputs.at("stock").at("max").at(2).get<double>();
+  if (run.contains("feed_marks_plan")) out.feedMarksPlan = run.at("feed_marks_plan");
+  return out;
+}
+
+TiledOutput::TiledOutput(const TiledRun& run, const std::string& dir)
     : run_(run),
       dir_(dir),
-      grid_(gridFromJson(run.at("grid"))),
+      grid_(run.record.grid),
       writer_(grid_, (fs::path(dir) / "heights.exr").string(),
-              (fs::path(dir) / "heights.gsf").string(), run.at("title").get<std::string>(),
-              run.at("exr_tile_rows").get<int>()) {
+              (fs::path(dir) / "heights.gsf").string(), run.title, run.exrTileRows) {
   // The same reduction as writePreviewPng's for the whole map: blocks of k x k cells
   // aligned at cell (0, 0), each keeping its minimum.
   const int64_t longSide = std::max(grid_.nx, grid_.ny);
@@ -216,8 +209,8 @@ TiledOutput::TiledOutput(const json& run, const std::string& dir)
   pooled.nx = (grid_.nx + poolFactor_ - 1) / poolFactor_;
   pooled.ny = (grid_.ny + poolFactor_ - 1) / poolFactor_;
   preview_ = ZMap(pooled, HUGE_VAL);
-  if (run.contains("feed_marks_plan"))
-    feedMarks_ = std::make_unique<FeedMarkSampler>(run.at("feed_marks_plan"), grid_);
+  if (!run.feedMarksPlan.is_null())
+    feedMarks_ = std::make_unique<FeedMarkSampler>(run.feedMarksPlan, grid_);
 }
 
 void TiledOutput::add(const ZMap& band, const json& stats) {
@@ -255,18 +248,12 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   const auto t0 = Clock::now();
   writer_.close();
   PreviewOptions preview;
-  preview.title = previewTitle(run_.at("title").get<std::string>());
-  preview.uncutHeight = run_.at("inputs").at("stock").at("max").at(2).get<double>();
+  preview.title = previewTitle(run_.title);
+  preview.uncutHeight = run_.uncutHeight;
   writePreviewPng(preview_, (fs::path(dir_) / "preview.png").string(), preview);
   writeSeconds_ += secondsSince(t0);
 
-  RunRecord record;
-  record.jobSource = run_.at("job_source").get<std::string>();
-  record.inputs = run_.at("inputs");
-  record.grid = grid_;
-  record.cuttingMoves = run_.at("cutting_moves").get<int64_t>();
-  record.sweptSegments = run_.at("swept_segments").get<int64_t>();
-  record.cullingTiles = run_.at("culling_tiles").get<int64_t>();
+  RunRecord record = run_.record;
   record.requestedThreads = threads;
   record.sceneSeconds = sceneSeconds;
   record.castSeconds = castSeconds_;
@@ -285,9 +272,6 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
       record.surfaceStats["notes"].get<std::string>() +
       "; computed band by band: heights from the mean (no plane levelling) and no Sa. "
       "`scallop stats heights.gsf` gives all of them from the file";
-  record.tiled = {{"bands", run_.at("bands")},
-                  {"band_rows", run_.at("band_rows")},
-                  {"exr_tile_rows", run_.at("exr_tile_rows")}};
   record.pathFile = pathFile_;
   if (feedMarks_) record.feedMarks = feedMarks_->report();
   record.totalSeconds = totalSeconds + secondsSince(t0);

@@ -21,54 +21,53 @@
 #include "raycast/zmap.h"
 #include "tools/io/height_images.h"
 #include "tools/run/feed_mark_report.h"
+#include "tools/run/report.h"
+#include "tools/run/simulation_plan.h"
 #include "tools/run/simulation_run.h"
 
 namespace scallop {
 
 struct Job;
 
-struct BandLayout {
-  int64_t bandRows = 0;  // image rows per band; the last band may have fewer
-  int64_t bands = 0;
-  int tileHeight = 0;  // OpenEXR tile rows; bandRows is a multiple of it
-
-  int64_t firstRow(int64_t band) const { return band * bandRows; }
-  int64_t endRow(int64_t band, const GridSpec& g) const {
-    return std::min(g.ny, (band + 1) * bandRows);
-  }
-  // The band's rows as a sub-grid of `g` (ZMap order: j = 0 is its smallest y).
-  GridSpec bandGrid(int64_t band, const GridSpec& g) const {
-    return g.rows(g.ny - endRow(band, g), g.ny - firstRow(band));
-  }
-};
-
-// Bands of `requestedRows` rows (0: as many as fit in 256 MB of doubles), rounded
-// down to a whole number of OpenEXR tiles of at most 256 rows.
-BandLayout bandLayout(const GridSpec& grid, int64_t requestedRows);
-
-// True when the job's map fits in memory. Otherwise checks that the tiled outputs fit
-// on the disk holding `outDir` (throwing the memory refusal, with the disk numbers
-// added, when they do not), says on stderr that the map is computed in bands, and
-// returns false.
-bool gridFitsMemory(const Job& job, const std::string& outDir);
+// Checks, for a run in bands that were not asked for (its map does not fit in memory),
+// that the outputs fit on the disk holding `outDir`, throwing the memory refusal with
+// the disk numbers added when they do not, and says on stderr that the map is computed
+// in bands.
+void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::string& outDir);
 
 // A simulation run in bands: all of them into the usual outputs, or with
 // settings.bands = "K:M" only bands K..M-1 into band files.
-RunOutcome runTiledSimulation(const Job& job, const RunSettings& settings);
+RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
+                              const RunSettings& settings);
+
+// What TiledOutput needs of a run besides its bands: made from the plan by the run
+// itself, or by merge from the "run" description that band files carry.
+struct TiledRun {
+  // The report's description of the run: jobSource, inputs, grid, cuttingMoves,
+  // sweptSegments, cullingTiles and tiled ({"bands", "band_rows", "exr_tile_rows"}).
+  RunRecord record;
+  std::string title;             // simulationTitle
+  int exrTileRows = 0;           // BandLayout::tileHeight
+  double uncutHeight = 0;        // the stock's top, mm: the preview's uncut grey
+  nlohmann::json feedMarksPlan;  // a teeth run's feedMarkPlan, else null
+};
+
+// The TiledRun of a band file's "run" description (merge).
+TiledRun tiledRunFromBands(const nlohmann::json& run);
 
 // Streams bands, in order, into DIR/heights.exr, heights.gsf, preview.png and
-// report.json. `run` describes the run (band files carry it, see tiled_simulation.cpp);
-// each band comes with its statistics, and finish() returns report.json's content.
+// report.json. Each band comes with its statistics, and finish() returns report.json's
+// content.
 class TiledOutput {
  public:
-  TiledOutput(const nlohmann::json& run, const std::string& dir);
+  TiledOutput(const TiledRun& run, const std::string& dir);
   void add(const ZMap& band, const nlohmann::json& bandStats);
   nlohmann::json finish(double sceneSeconds, double totalSeconds, int threads);
   // Before finish(): the report's "path_file" section (pathFileReport), if any.
   void setPathFile(const nlohmann::json& pathFile) { pathFile_ = pathFile; }
 
  private:
-  nlohmann::json run_;
+  TiledRun run_;
   std::string dir_;
   GridSpec grid_;
   HeightStreamWriter writer_;
