@@ -7,6 +7,7 @@
 #include <string>
 
 #include "raycast/simulation.h"
+#include "tests/support/bench_heights.h"
 #include "tests/support/cli_harness.h"
 #include "tools/run/bench_cases.h"
 
@@ -34,12 +35,7 @@ TEST_F(BenchCli, QuickCaseB1PrintsTheDocumentedJson) {
   EXPECT_GE(doc["stamp"]["B1"]["min_difference_mm"].get<double>(), -1e-9);
 
   // The same case through simulate(), as `scallop simulate` runs it: same heights.
-  BenchCaseOptions options;
-  options.quick = true;
-  options.area = 2;
-  const BenchCase b = makeBenchCase("B1", options);
-  const SimulationResult sim = simulate(b.cutter, b.path, b.stock, b.grid);
-  EXPECT_EQ(c["heights_hash"].get<std::string>(), fmt::format("{:016x}", heightsHash(sim.map)));
+  EXPECT_EQ(c["heights_hash"].get<std::string>(), test::simulatedQuickHash("B1", 2));
 }
 
 TEST_F(BenchCli, TableOnStdoutAndUsageErrors) {

@@ -1,7 +1,7 @@
 // X3P import (tools/io/x3p_reader.h): scallop's own archives read back (heights in
 // float64 metres, so exactly (z * 1e-3) * 1e3 mm), and damaged or foreign archives
 // refused with a message naming the file and what is wrong (archives with a member
-// missing, damaged or inconsistent: tests/python/test_heights_io.py, which edits them
+// missing, damaged or inconsistent: tests/tools/python/test_heights_io.py, which edits them
 // with Python's zipfile).
 #include "tools/io/x3p_reader.h"
 

@@ -12,6 +12,7 @@
 
 #include "base/input_error.h"
 #include "raycast/simulation.h"
+#include "tests/support/bench_heights.h"
 #include "tools/run/bench_cases.h"
 
 namespace scallop {
@@ -53,12 +54,7 @@ TEST(BenchRun, OneCaseGivesTheHeightsOfSimulateAndNamesItsStages) {
   EXPECT_EQ(lastDone, lastTotal);
   EXPECT_EQ(lastTotal, 100 * 100);
 
-  BenchCaseOptions options;
-  options.quick = true;
-  options.area = 1;
-  const BenchCase b = makeBenchCase("B1", options);
-  const SimulationResult sim = simulate(b.cutter, b.path, b.stock, b.grid);
-  EXPECT_EQ(c["heights_hash"].get<std::string>(), fmt::format("{:016x}", heightsHash(sim.map)));
+  EXPECT_EQ(c["heights_hash"].get<std::string>(), test::simulatedQuickHash("B1", 1));
 }
 
 TEST(BenchRun, TheStampingBaselineHasItsOwnStage) {

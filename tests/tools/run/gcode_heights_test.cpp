@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "base/constants.h"
 #include "raycast/simulation.h"
 #include "sweep/brute_force_reference.h"
-#include "base/constants.h"
 #include "tests/support/cli_harness.h"
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"

@@ -13,6 +13,7 @@
 
 #include "analysis/analytic_surfaces.h"
 #include "base/input_error.h"
+#include "tests/support/temp_folder.h"
 #include "tools/io/stl_io.h"
 
 namespace scallop {
@@ -20,16 +21,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class GougeRun : public ::testing::Test {
+class GougeRun : public test::TempFolderTest {
  protected:
+  GougeRun() : TempFolderTest("gouge-run") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("scallop-gouge-run-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
+    TempFolderTest::SetUp();
     fs::create_directories(dir_);
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   std::string surface(SurfaceShape shape, int64_t facets) {
     SurfaceSpec spec;
@@ -41,8 +39,6 @@ class GougeRun : public ::testing::Test {
     writeStl(makeAnalyticSurface(spec), file, StlFormat::Binary, "gouge run test");
     return file;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(GougeRun, PlaneIsFullyMachinableAndTheReportSaysSo) {

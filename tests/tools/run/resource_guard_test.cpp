@@ -13,6 +13,7 @@
 #include "base/input_error.h"
 #include "tests/sanitizer.h"
 #include "tests/support/cli_harness.h"
+#include "tests/support/short_moves_job.h"
 #include "tools/io/job.h"
 #include "tools/io/tool_path_file.h"
 #include "tools/run/memory_limits.h"
@@ -24,15 +25,7 @@ namespace {
 // measurement of checkSceneFitsMemory (estimated ~5.4 KB of scene per move: 20 tiles,
 // since moves shorter than R get at most ~16 tiles, see cullingTileSide).
 Job shortMoves(size_t n) {
-  Job job = parseJob(R"({"tool": {"type": "ball", "radius": 1},
-    "stock": {"min": [0, 0, -1], "max": [20, 20, 0]}, "grid": {"spacing": 0.1},
-    "path": {"raster": {"direction": "x", "step_over": 30, "depth": 0.2}}})",
-                     "guard.json");
-  Move m;
-  m.from = {{1, 1, -0.2}, {0, 0, 1}};
-  m.to = {{1.1, 1, -0.2}, {0, 0, 1}};
-  job.path.moves.assign(n, m);
-  return job;
+  return test::shortMovesJob(n, 0.1, "guard.json");
 }
 
 TEST(ResourceGuard, SceneLargerThanMemoryIsRefusedBeforeBuilding) {

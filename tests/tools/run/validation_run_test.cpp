@@ -12,6 +12,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/support/temp_folder.h"
 #include "tools/run/validation_table.h"
 
 namespace scallop {
@@ -24,16 +25,9 @@ std::string slurpFile(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-class ValidationRun : public ::testing::Test {
+class ValidationRun : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("scallop-validation-run-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  ValidationRun() : TempFolderTest("validation-run") {}
 };
 
 TEST_F(ValidationRun, WritesEveryTableAndPictureItReturns) {

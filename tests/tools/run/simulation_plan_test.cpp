@@ -7,6 +7,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "tests/support/short_moves_job.h"
 #include "tools/io/job.h"
 #include "tools/run/simulation_run.h"
 
@@ -17,15 +18,7 @@ constexpr double kPlenty = 64.0 * (1ull << 30);  // bytes of memory available
 
 // A 20 x 20 mm stock on a 0.01 mm grid (2000 x 2000 cells) cut by three short moves.
 Job planJob() {
-  Job job = parseJob(R"({"tool": {"type": "ball", "radius": 1},
-    "stock": {"min": [0, 0, -1], "max": [20, 20, 0]}, "grid": {"spacing": 0.01},
-    "path": {"raster": {"direction": "x", "step_over": 30, "depth": 0.2}}})",
-                     "plan.json");
-  Move m;
-  m.from = {{1, 1, -0.2}, {0, 0, 1}};
-  m.to = {{1.1, 1, -0.2}, {0, 0, 1}};
-  job.path.moves.assign(3, m);
-  return job;
+  return test::shortMovesJob(3, 0.01, "plan.json");
 }
 
 TEST(SimulationPlan, AJobThatFitsRunsInMemoryOnItsGrid) {

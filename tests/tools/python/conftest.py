@@ -1,4 +1,4 @@
-"""Shared fixtures of the Python module's tests (tests/python, run by ctest).
+"""Shared fixtures of the Python module's tests (tests/tools/python, run by ctest).
 
 ctest sets PYTHONPATH to <build>/python (the module), SCALLOP_BINARY to the built
 `scallop` executable and SCALLOP_SOURCE_DIR to the repository, so each test can run
