@@ -39,14 +39,21 @@ class GougeRun : public test::TempFolderTest {
     writeStl(makeAnalyticSurface(spec), file, StlFormat::Binary, "gouge run test");
     return file;
   }
+
+  // The surface of `shape` machined by a cylinder of `radius` and `length` (mm), mapped
+  // on a 0.5 mm grid.
+  GougeSettings settings(SurfaceShape shape, int64_t facets, double radius, double length) {
+    GougeSettings s;
+    s.surface = surface(shape, facets);
+    s.radius = radius;
+    s.length = length;
+    s.gridSpacing = 0.5;
+    return s;
+  }
 };
 
 TEST_F(GougeRun, PlaneIsFullyMachinableAndTheReportSaysSo) {
-  GougeSettings s;
-  s.surface = surface(SurfaceShape::Plane, 400);
-  s.radius = 3;
-  s.length = 10;
-  s.gridSpacing = 0.5;
+  GougeSettings s = settings(SurfaceShape::Plane, 400, 3, 10);
   const GougeResult r = runGouge(s);
   EXPECT_EQ(r.stlFormat, "binary");
   EXPECT_GT(r.triangles, 0u);
@@ -69,11 +76,7 @@ TEST_F(GougeRun, PlaneIsFullyMachinableAndTheReportSaysSo) {
 }
 
 TEST_F(GougeRun, WritesThePosturesAndTheFolderItIsGiven) {
-  GougeSettings s;
-  s.surface = surface(SurfaceShape::Dome, 300);
-  s.radius = 2;
-  s.length = 5;
-  s.gridSpacing = 0.5;
+  GougeSettings s = settings(SurfaceShape::Dome, 300, 2, 5);
   s.posturesCsv = (dir_ / "postures.csv").string();
   s.outDir = (dir_ / "out").string();
   const GougeResult r = runGouge(s);
