@@ -8,39 +8,9 @@
 //
 //   1. Upper bound. Every f(t) evaluated is the height of a real point of S, so the
 //      smallest one evaluated, U, satisfies U >= F.
-//   2. Lower bounds of f over an interval I = [ta, tb], w = tb - ta, each proven:
-//   2a. World-fixed plane (the chord bound). For a unit N with N.z < 0 and
-//      h_t(N) = max over K(t) of N.p, every point of K(t) on l has N.p <= h_t(N), so
-//      f(t) >= (h_t(N) - N.x x - N.y y) / N.z, and H >= max over I of h_t(N) bounds f
-//      on I. A cutter point k (tip at the origin) follows g(t) = N.(tip(t) + R(t) k)
-//      with tip linear and |R''k| <= omega^2 |k|, so g lies below its chord plus
-//      omega^2 |k| w^2 / 8 (interpolation error of a function with bounded second
-//      derivative):  H = max(h_ta(N), h_tb(N)) + omega^2 rho w^2 / 8,  rho bounding |k|
-//      over the points that can attain the support during I: each g moves by at most
-//      V w, V = |N.(p1 - p0)| + omega reach, so those points lie in the cap
-//      N.k >= h - 2 V w of K(ta), below s_max = (|N_perp| R + 2 V w - h) / (-N.a) along
-//      the axis: rho = hypot(s_max, R) (the flute top drops out). N is the normal at
-//      the lowest point of K(ta) or K(tb) on l, or, where l misses K or meets its side,
-//      a steep plane leaning out of the footprint.
-//   2b. Cutter-fixed plane. The tangent plane at the lowest point of K(tS) on l, carried
-//      with the cutter: N(t) = R(t) R(tS)^-1 N_S, h = h_tS(N_S) for all t (the cutter
-//      turns rigidly), so K(t) lies in N(t).(p - tip(t)) <= h, and a height z is below
-//      every K(t) of I if g(t) = N(t).(Q - tip(t)) - h > 0 on I, Q = (x, y, z) (with
-//      N.z(t) < 0 on I, g falls as z rises). Its derivatives are in closed form (see
-//      movingPlaneBound), and g >= chord - max(0, sup g'') w^2 / 8 >= min(g(ta), g(tb))
-//      less that margin: only curvature towards the line costs. Where the line meets
-//      a flat face (the bottom of a bull or flat cutter) this plane is the face itself
-//      and the bound is exact; 2a's fixed normal there loses the rim's rotation at
-//      first order.
-//   2c. Grown cutter. Every point of every K(t), t in I, lies within
-//      grow = (|p1 - p0| + omega reach) w / 2 of its place at the middle pose, so the
-//      lowest point of that cutter grown by `grow` (R, r + grow, L + 2 grow, tip grow
-//      lower) bounds f on I, and a line that misses it misses every K(t). Used where l
-//      leaves or grazes a cutter, where planes say little.
-//   2d. Taylor form of 2b at a sample: g(t) >= g + g' tau + m tau^2 / 2 with m the
-//      second derivative at the sample less |g'''| w. Where g curves away from the
-//      line (m > 0) and the sample is a minimum of f (g' ~ 0), this proves both
-//      intervals beside it at once, however wide.
+//   2. Lower bounds of f over an interval I = [ta, tb], each proven (interval_bounds.cpp):
+//      2a a world-fixed plane, 2b a plane fixed to the cutter, 2c a grown cutter, 2d the
+//      Taylor form of 2b at a sample.
 //   3. Search. First the minimum of f: an interval whose end slopes f' = (N.v) / N.z
 //      (v: velocity of the contact point) change sign is split at the secant root until
 //      the best sample is flat (|f'| <= 1e-8 mm per unit t). Then best first: the
@@ -62,6 +32,7 @@
 #include <limits>
 #include <new>
 
+#include "sweep/interval_bounds.h"
 #include "sweep/ray_clearance.h"
 
 namespace scallop {
@@ -76,39 +47,6 @@ constexpr double kClearanceSlope = 1e-6;
 constexpr int kNewtonSteps = 4;  // step 5a's probes after the middle (B3: 1)
 constexpr int kLocateSteps = 8;  // step 5b's secant steps in the ends' bracket
 
-// f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
-// A search keeps its samples in raw storage and constructs each one as it is taken:
-// Vec3's member initialisers would otherwise zero all kMaxSamples (200 KB) on every
-// call, which was 15 % of B3's time.
-struct Sample {
-  double t;
-  Vec3 tip, axis;
-  double z;       // f(t), mm; +inf when l misses K(t)
-  Vec3 normal;    // unit, normal.z < 0; zero when no plane is known
-  double hOwn;    // support of K(t) - tip(t) in `normal` (every bound needs it)
-  double slope;   // df/dt where known, else NaN
-  Vec3 vel, acc;  // d tip / dt and d^2 tip / dt^2 at t
-  Vec3 dn, ddn;   // d/dt and d2/dt2 of `normal` carried with the cutter (steps 2b, 2d)
-};
-
-// What step 2's bounds need of the tip's motion: where it is linear (CL data, TCP on),
-// its chord p1 - p0, which is its velocity; on a curve (TCP off, pose_curve.h) bounds of
-// its speed and acceleration over [0, 1], mm per unit t and t^2.
-struct TipBounds {
-  Vec3 delta;
-  bool linear;
-  double speed;  // >= |tip'(t)|: |delta| when linear
-  double accel;  // >= |tip''(t)|: 0 when linear
-  double jerk;   // >= |tip'''(t)|: 0 when linear
-  // A bound of |N . tip'(t)| over the move.
-  double rateAlong(const Vec3& N) const { return linear ? std::fabs(dot(N, delta)) : speed; }
-};
-
-TipBounds tipBoundsOf(const PoseCurve& curve, double speed) {
-  return {curve.tipEnd() - curve.tipStart(), curve.linearTip(), speed, curve.tipAccelBound(),
-          curve.tipJerkBound()};
-}
-
 struct Interval {
   int a, b;      // samples at its ends (ta < tb)
   double lower;  // its proven lower bound of f
@@ -117,38 +55,6 @@ struct Interval {
 
 // Searches that hit kMaxSamples before their proof closed (expected: none).
 std::atomic<unsigned long long> unprovenSearchCount{0};
-
-// The horizontal unit direction from the footprint of the axis segment [tip, tip + L a]
-// to (x, y), leaned 1e-3 downwards: a steep plane that rises 1 mm per um outside the
-// cutter's shadow. Zero when (x, y) lies on the shadow of the axis itself.
-Vec3 steepNormal(const Cutter& c, const Vec3& tip, const Vec3& a, double x, double y) {
-  const double ex = a.x * c.fluteLength, ey = a.y * c.fluteLength, ee = ex * ex + ey * ey;
-  const double px = x - tip.x, py = y - tip.y;
-  const double s = ee > 0 ? std::clamp((px * ex + py * ey) / ee, 0.0, 1.0) : 0.0;
-  const double dx = px - s * ex, dy = py - s * ey, dd = std::sqrt(dx * dx + dy * dy);
-  if (!(dd > 1e-9)) return {};
-  return normalize(Vec3{dx / dd, dy / dd, -1e-3});
-}
-
-// The chord bound of step 2a: H >= max over [a.t, b.t] of h_t(N), N unit, given the
-// supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
-double supportOver(const Cutter& c, double omega, double reach, const TipBounds& tip,
-                   const Sample& a, double hKa, const Sample& b, double hKb, const Vec3& N) {
-  const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
-  const double w = b.t - a.t;
-  if (omega == 0 || w <= 0) return h;
-  // The cap of the points that can attain the support during the interval.
-  const double V = tip.rateAlong(N) + omega * reach;
-  const double u = dot(N, a.axis);
-  double rho = reach;
-  if (u < 0) {
-    const double nPerp = std::sqrt(std::max(0.0, 1 - u * u));
-    const double sMax = (nPerp * c.radius + 2 * V * w - hKa) / -u;
-    const double s = std::clamp(sMax, 0.0, c.fluteLength);
-    rho = std::min(reach, std::sqrt(s * s + c.radius * c.radius));
-  }
-  return h + (omega * omega * rho + tip.accel) * w * w / 8;
-}
 
 // One search on the line l through (x, y): the samples of f taken so far, the best of
 // them (step 1's U) and the open intervals of step 3, with one method per step of the
@@ -163,29 +69,21 @@ class CertifiedSearch {
         x_(x),
         y_(y),
         cutoff_(cutoff),
-        omega_(curve.turnRate()),
-        tipMotion_(tipBoundsOf(curve, bounds.tipSpeed)),
-        samples_(reinterpret_cast<Sample*>(sampleStorage_)) {}
+        intervalBounds_(c, curve, bounds, x, y),
+        samples_(reinterpret_cast<SearchSample*>(sampleStorage_)) {}
 
   LowestPoint run();
 
  private:
   // Whether a sample met K(t) where it has a plane that is not near vertical: the
   // cutter-fixed planes of steps 2b and 2d apply from it.
-  static bool smooth(const Sample& s) { return s.z < HUGE_VAL && s.normal.z <= -1e-3; }
+  static bool smooth(const SearchSample& s) { return s.z < HUGE_VAL && s.normal.z <= -1e-3; }
   // Step 1.
   int sampleAt(double t, double zBelow);
   int take(double t);
   LowestPoint result() const;
-  // Step 2.
+  // Step 2 (the bounds themselves: intervalBounds_).
   void supportOf(int i);
-  double planeBound(const Sample& from, const Sample& a, const Sample& b) const;
-  double thirdDerivative(double D) const;
-  double distanceBound(const Sample& a, const Sample& b, double zLow, double zHigh) const;
-  double movingPlaneBound(const Sample& from, const Sample& to, const Sample& a,
-                          const Sample& b) const;
-  bool taylorProves(const Sample& from, const Sample& a, const Sample& b, double z) const;
-  double grownBound(const Sample& a, const Sample& b) const;
   Interval boundOf(int ia, int ib);
   // Steps 5 and 4b.
   void locateFromMiddle();
@@ -205,11 +103,10 @@ class CertifiedSearch {
   const PoseCurve& curve_;
   const TurningBounds& bounds_;
   const double x_, y_, cutoff_;
-  const double omega_;
-  const TipBounds tipMotion_;
+  const IntervalBounds intervalBounds_;  // step 2's bounds on this line
 
-  alignas(Sample) unsigned char sampleStorage_[kMaxSamples * sizeof(Sample)];
-  Sample* const samples_;
+  alignas(SearchSample) unsigned char sampleStorage_[kMaxSamples * sizeof(SearchSample)];
+  SearchSample* const samples_;
   int count_ = 0;
   int best_ = -1;        // the lowest sample so far: U's
   double U_ = HUGE_VAL;  // step 1's upper bound of F
@@ -223,7 +120,7 @@ class CertifiedSearch {
 // bound of the interval being split), and the plane and slope that bound and steer the
 // search from it.
 inline int CertifiedSearch::sampleAt(double t, double zBelow) {
-  Sample& s = *new (&samples_[count_]) Sample;
+  SearchSample& s = *new (&samples_[count_]) SearchSample;
   s.t = t;
   s.z = HUGE_VAL;
   s.normal = {};
@@ -272,141 +169,32 @@ inline LowestPoint CertifiedSearch::result() const {
 // Step 2: the support of K(t) - tip(t) in the sample's plane normal, which every bound
 // of step 2 needs and step 5 does not: computed once, on first use.
 inline void CertifiedSearch::supportOf(int i) {
-  Sample& s = samples_[i];
+  SearchSample& s = samples_[i];
   if (std::isnan(s.hOwn))
     s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c_, s.axis, s.normal)) : 0;
-}
-
-// Step 2a's bound over [a.t, b.t] from one end's plane, less its round-off.
-inline double CertifiedSearch::planeBound(const Sample& from, const Sample& a,
-                                          const Sample& b) const {
-  const Vec3& N = from.normal;
-  if (N.z == 0) return -HUGE_VAL;
-  const Sample& other = &from == &a ? b : a;
-  const double hOther = dot(N, cutterSupport(c_, other.axis, N));
-  const double H =
-      &from == &a ? supportOver(c_, omega_, bounds_.reach, tipMotion_, a, from.hOwn, b, hOther, N)
-                  : supportOver(c_, omega_, bounds_.reach, tipMotion_, a, hOther, b, from.hOwn, N);
-  const double nq = N.x * x_ + N.y * y_;
-  const double z = (H - nq) / N.z;
-  return z - 1e-12 * (1 + std::fabs(H) + std::fabs(nq)) / -N.z;
-}
-
-// Steps 2b and 2d share the plane fixed to the cutter at a sample S and its
-// derivatives: g(t) = N(t).(Q - tip(t)) - h_S with N(t) = R(t) R(tS)^-1 N_S, so that
-//   g'  = N'.(Q - tip) - N.tip',                N'  = Omega x N,
-//   g'' = N''.(Q - tip) - 2 N'.tip' - N.tip'',  N'' = Omega' x N + Omega x (Omega x N),
-// and |g'''| <= omega^3 D + 3 omega^2 S + 3 omega A + J (|N^(k)| <= omega^k, D >=
-// |Q - tip|, S, A, J >= |tip'|, |tip''|, |tip'''|; A = J = 0 for a linear tip). This is
-// that bound of |g'''|; tipMotion_.speed also bounds the tip's path length, mm.
-inline double CertifiedSearch::thirdDerivative(double D) const {
-  const double move = tipMotion_.speed;
-  return omega_ * omega_ * omega_ * D + 3 * omega_ * omega_ * move + 3 * omega_ * tipMotion_.accel +
-         tipMotion_.jerk;
-}
-
-// D of steps 2b and 2d: >= |Q - tip(t)| for t in [a.t, b.t] and Q.z in [zLow, zHigh].
-inline double CertifiedSearch::distanceBound(const Sample& a, const Sample& b, double zLow,
-                                             double zHigh) const {
-  double D = 0;
-  for (const Sample* e : {&a, &b})
-    D = std::max(D,
-                 std::sqrt((x_ - e->tip.x) * (x_ - e->tip.x) + (y_ - e->tip.y) * (y_ - e->tip.y)) +
-                     std::max(std::fabs(zHigh - e->tip.z), std::fabs(zLow - e->tip.z)));
-  return D + tipMotion_.speed;
-}
-
-// Step 2b: g >= its chord - max(0, sup g'') w^2 / 8 (only curvature towards the line
-// costs: a concave g lies above its chord), and the chord >= the smaller end value;
-// each end's g >= margin moves the plane up by the margin. The heights where this is
-// claimed are [lowest tip - reach, U]: Q's z enters g'' and D there.
-inline double CertifiedSearch::movingPlaneBound(const Sample& from, const Sample& to,
-                                                const Sample& a, const Sample& b) const {
-  const Vec3& Na = from.normal;
-  if (!(from.z < HUGE_VAL) || !(Na.z <= -1e-3) || !(U_ < HUGE_VAL)) return -HUGE_VAL;
-  const Vec3 Nb = curve_.carry(Na, from.t, to.t);
-  const double w = b.t - a.t;
-  if (std::max(Na.z, Nb.z) + omega_ * w >= 0) return -HUGE_VAL;  // may turn horizontal
-  const double h = from.hOwn;
-  const double floor = std::min(a.tip.z, b.tip.z) - bounds_.reach;
-  const double D = distanceBound(a, b, floor, U_);
-  const double cross2 = 2 * dot(from.dn, from.vel) + dot(Na, from.acc);
-  double gpp = -HUGE_VAL;  // sup of g'' over the interval and those heights
-  for (double z : {floor, U_})
-    gpp = std::max(gpp, dot(from.ddn, Vec3{x_, y_, z} - from.tip) - cross2);
-  gpp += thirdDerivative(D) * w;
-  const double margin = std::max(0.0, gpp) * w * w / 8;
-  auto planeZ = [&](const Vec3& N, const Sample& e) {
-    const double nq = N.x * (x_ - e.tip.x) + N.y * (y_ - e.tip.y);
-    return e.tip.z + (margin + h - nq) / N.z;
-  };
-  const double z0 = std::min({planeZ(Na, from), planeZ(Nb, to), U_});
-  return std::max(z0, floor) - 1e-12 * (1 + std::fabs(z0) + D) / -std::max(Na.z, Nb.z);
-}
-
-// Step 2d: whether height z is proven below every K(t), t in [a.t, b.t], by the Taylor
-// form at `from`: g(t) >= g + g' tau + m tau^2 / 2 with m = g''(tS) - |g'''| w, whose
-// minimum over tau is closed form. Where g curves away from the line (m > 0: the
-// convex case that costs step 2b its margin) this proves a whole interval from one
-// sample at a minimum of f, where g' ~ 0.
-inline bool CertifiedSearch::taylorProves(const Sample& from, const Sample& a, const Sample& b,
-                                          double z) const {
-  const Vec3& N = from.normal;
-  if (!(from.z < HUGE_VAL) || !(N.z <= -1e-3)) return false;
-  const double w = b.t - a.t;
-  if (std::max(N.z, curve_.carry(N, from.t, from.t == a.t ? b.t : a.t).z) + omega_ * w >= 0)
-    return false;
-  const Vec3 q = Vec3{x_, y_, z} - from.tip;
-  const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, from.vel);
-  const double D = distanceBound(a, b, z, z);
-  const double m =
-      dot(from.ddn, q) - 2 * dot(from.dn, from.vel) - dot(N, from.acc) - thirdDerivative(D) * w;
-  const double ta = a.t - from.t, tb = b.t - from.t;
-  double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
-  if (m > 0 && -g1 / m > ta && -g1 / m < tb) low = std::min(low, g0 - 0.5 * g1 * g1 / m);
-  return low > 1e-13 * (1 + D);
-}
-
-// Step 2c's bound: every K(t) of the interval lies within delta of K at its middle
-// pose, so the lowest point of that cutter grown by delta bounds them all (+inf: the
-// line misses every one).
-// |dp/dt| of any cutter point: the tip's speed plus omega reach. On a curved tip the
-// interval's own speed bound, |tip'(tc)| + A w / 2, is tighter than the move's.
-inline double CertifiedSearch::grownBound(const Sample& a, const Sample& b) const {
-  const double tc = 0.5 * (a.t + b.t), w = b.t - a.t;
-  const double move = tipMotion_.speed;
-  const double tipSpeed =
-      tipMotion_.linear
-          ? move
-          : std::min(move, length(curve_.tipVelocity(tc)) + 0.5 * tipMotion_.accel * w);
-  const double speed = tipSpeed + omega_ * bounds_.reach;
-  const double grow = speed * 0.5 * w * (1 + 1e-12) + 1e-12;
-  const Vec3 axis = curve_.axis(tc), tip = curve_.tip(tc) - axis * grow;
-  // K (+) Ball(grow) lies in the cutter with R, r grown by `grow` and L by twice that,
-  // whose tip is `grow` lower along the axis (the same core, swept a ball wider).
-  Cutter grown = c_;
-  grown.radius += grow, grown.cornerRadius += grow, grown.fluteLength += 2 * grow;
-  const LowestPoint lp = cutterLowestPoint(grown, axis, x_ - tip.x, y_ - tip.y);
-  if (!lp.hit) return HUGE_VAL;
-  return lp.z + tip.z - 1e-12 * (1 + std::fabs(lp.z) + std::fabs(tip.z));
 }
 
 // Step 2: the interval between two samples with its lower bound, the bounds tried
 // from the cheapest and tightest until one proves it cannot improve U.
 inline Interval CertifiedSearch::boundOf(int ia, int ib) {
   supportOf(ia), supportOf(ib);
-  const Sample &a = samples_[(ia)], &b = samples_[(ib)];
+  const SearchSample &a = samples_[(ia)], &b = samples_[(ib)];
   if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z), U_};  // both ends are known
   const double enough = std::min(U_ - kProofGap, bounds_.zTop);
   // The cutter-fixed planes first (tight wherever the line meets the cutters' lower
   // faces); the world-fixed planes where those do not settle it; where the line
   // leaves or grazes a cutter, planes say little and the grown cutter decides.
-  double lower = std::max(movingPlaneBound(a, b, a, b), movingPlaneBound(b, a, a, b));
-  if (!(lower >= enough)) lower = std::max({lower, planeBound(a, a, b), planeBound(b, a, b)});
+  double lower = std::max(intervalBounds_.cutterPlane(a, b, a, b, U_),
+                          intervalBounds_.cutterPlane(b, a, a, b, U_));
+  if (!(lower >= enough))
+    lower =
+        std::max({lower, intervalBounds_.worldPlane(a, a, b), intervalBounds_.worldPlane(b, a, b)});
   if (!(lower >= enough) && U_ < HUGE_VAL &&
-      (taylorProves(a, a, b, U_ - kProofGap) || taylorProves(b, a, b, U_ - kProofGap)))
+      (intervalBounds_.taylorProves(a, a, b, U_ - kProofGap) ||
+       intervalBounds_.taylorProves(b, a, b, U_ - kProofGap)))
     lower = U_ - kProofGap;
-  if (!(lower >= enough) && !(smooth(a) && smooth(b))) lower = std::max(lower, grownBound(a, b));
+  if (!(lower >= enough) && !(smooth(a) && smooth(b)))
+    lower = std::max(lower, intervalBounds_.grownCutter(a, b));
   return Interval{ia, ib, lower, U_};
 }
 
@@ -418,10 +206,10 @@ inline bool CertifiedSearch::cleared() {
   if (rayClearsMove(c_, curve_, {x_, y_, U_ - kProofGap}, samples_[best_].t, 0, 1)) return true;
   if (!smooth(samples_[best_])) return false;
   supportOf(best_);
-  Sample whole[2];
+  SearchSample whole[2];
   whole[0].t = 0, whole[0].tip = curve_.tip(0);
   whole[1].t = 1, whole[1].tip = curve_.tip(1);
-  return taylorProves(samples_[best_], whole[0], whole[1], U_ - kProofGap);
+  return intervalBounds_.taylorProves(samples_[best_], whole[0], whole[1], U_ - kProofGap);
 }
 
 // Step 5a: the minimum of f located without any bound: from the middle, Newton's step
@@ -430,7 +218,7 @@ inline bool CertifiedSearch::cleared() {
 inline void CertifiedSearch::locateFromMiddle() {
   int prev = -1, cur = take(0.5);
   for (int step = 0; step < kNewtonSteps; ++step) {
-    const Sample& s = samples_[cur];
+    const SearchSample& s = samples_[cur];
     if (!std::isfinite(s.slope) || std::fabs(samples_[best_].slope) <= kClearanceSlope) break;
     double next;
     if (prev < 0) {
@@ -438,7 +226,7 @@ inline void CertifiedSearch::locateFromMiddle() {
       if (!(fpp > 0)) break;
       next = s.t - s.slope / fpp;
     } else {
-      const Sample& p = samples_[prev];
+      const SearchSample& p = samples_[prev];
       if (!std::isfinite(p.slope) || p.slope == s.slope) break;
       next = s.t - s.slope * (s.t - p.t) / (s.slope - p.slope);
     }
@@ -453,7 +241,7 @@ inline void CertifiedSearch::locateFromMiddle() {
 inline void CertifiedSearch::locateInEndsBracket() {
   int lo = take(0), hi = take(1);
   for (int step = 0; step < kLocateSteps; ++step) {
-    const Sample &A = samples_[lo], &B = samples_[hi];
+    const SearchSample &A = samples_[lo], &B = samples_[hi];
     if (std::fabs(samples_[best_].slope) <= kClearanceSlope || !(A.slope < 0 && B.slope > 0)) break;
     const double w = B.t - A.t, r = A.t + w * (-A.slope / (B.slope - A.slope));
     const double ts = r > A.t + w / 1024 && r < B.t - w / 1024 ? r : A.t + 0.5 * w;
@@ -526,7 +314,7 @@ inline bool CertifiedSearch::clearanceSettles(const Interval& picked) {
 // minimum; otherwise from the lower end, the width its plane can prove (the loss of the
 // current bound is second order in the width near a minimum); else the middle.
 inline double CertifiedSearch::splitPoint(const Interval& iv) const {
-  const Sample &A = samples_[(iv.a)], &B = samples_[(iv.b)];
+  const SearchSample &A = samples_[(iv.a)], &B = samples_[(iv.b)];
   const double w = B.t - A.t;
   double ts = A.t + 0.5 * w;
   bool chosen = false;
@@ -536,7 +324,7 @@ inline double CertifiedSearch::splitPoint(const Interval& iv) const {
   }
   if (!chosen && (std::isfinite(A.z) || std::isfinite(B.z))) {
     const bool fromA = A.z <= B.z;
-    const Sample& low = fromA ? A : B;
+    const SearchSample& low = fromA ? A : B;
     const double loss = low.z - iv.lower;
     const double allowed = low.z - (U_ - kProofGap);
     double step = 0.5;
@@ -599,16 +387,6 @@ inline LowestPoint CertifiedSearch::run() {
 }
 
 }  // namespace
-
-double turningSupport(const Cutter& cutter, const PoseCurve& curve, const TurningBounds& bounds,
-                      const Vec3& N) {
-  Sample a, b;
-  a.t = 0, a.tip = curve.tip(0), a.axis = curve.axis(0);
-  b.t = 1, b.tip = curve.tip(1), b.axis = curve.axis(1);
-  return supportOver(cutter, curve.turnRate(), bounds.reach, tipBoundsOf(curve, bounds.tipSpeed), a,
-                     dot(N, cutterSupport(cutter, a.axis, N)), b,
-                     dot(N, cutterSupport(cutter, b.axis, N)), N);
-}
 
 unsigned long long unprovenCertifiedSearches() {
   return unprovenSearchCount.load();
