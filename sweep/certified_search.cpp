@@ -160,8 +160,8 @@ inline LowestPoint CertifiedSearch::result() const {
   LowestPoint out;
   out.hit = true;
   out.z = U_;
-  out.normal = samples_[(best_)].normal;
-  out.t = samples_[(best_)].t;
+  out.normal = samples_[best_].normal;
+  out.t = samples_[best_].t;
   if (out.normal.z == 0) out.normal = {0, 0, -1};
   return out;
 }
@@ -178,7 +178,7 @@ inline void CertifiedSearch::supportOf(int i) {
 // from the cheapest and tightest until one proves it cannot improve U.
 inline Interval CertifiedSearch::boundOf(int ia, int ib) {
   supportOf(ia), supportOf(ib);
-  const SearchSample &a = samples_[(ia)], &b = samples_[(ib)];
+  const SearchSample &a = samples_[ia], &b = samples_[ib];
   if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z), U_};  // both ends are known
   const double enough = std::min(U_ - kProofGap, bounds_.zTop);
   // The cutter-fixed planes first (tight wherever the line meets the cutters' lower
@@ -264,7 +264,7 @@ inline bool CertifiedSearch::done(const Interval& iv) const {
 }
 
 inline void CertifiedSearch::push(const Interval& iv) {
-  if (!done(iv)) open_[(openCount_++)] = iv;
+  if (!done(iv)) open_[openCount_++] = iv;
 }
 
 inline bool CertifiedSearch::bracketsMinimum(const Interval& iv) const {
@@ -314,7 +314,7 @@ inline bool CertifiedSearch::clearanceSettles(const Interval& picked) {
 // minimum; otherwise from the lower end, the width its plane can prove (the loss of the
 // current bound is second order in the width near a minimum); else the middle.
 inline double CertifiedSearch::splitPoint(const Interval& iv) const {
-  const SearchSample &A = samples_[(iv.a)], &B = samples_[(iv.b)];
+  const SearchSample &A = samples_[iv.a], &B = samples_[iv.b];
   const double w = B.t - A.t;
   double ts = A.t + 0.5 * w;
   bool chosen = false;
@@ -359,12 +359,12 @@ inline LowestPoint CertifiedSearch::branchAndBound() {
       continue;
     }
     if (iv.lower >= cutoff_) return {};  // proven: F >= cutoff
-    open_[(k)] = open_[(--openCount_)];
+    open_[k] = open_[--openCount_];
 
     const double ts = splitPoint(iv);
     if (!(ts > samples_[iv.a].t && ts < samples_[iv.b].t)) continue;  // below double resolution
     const int is = sampleAt(ts, iv.lower);
-    if (samples_[(is)].z < U_) U_ = samples_[(is)].z, best_ = is;
+    if (samples_[is].z < U_) U_ = samples_[is].z, best_ = is;
     // Children that the new U already proves are dropped by push(), as are open
     // intervals, lazily, when picked.
     push(boundOf(iv.a, is));
