@@ -52,9 +52,9 @@ TipMotionBounds tipMotionOf(const PoseCurve& curve, double speed) {
 
 // The chord bound of step 2a: H >= max over [a.t, b.t] of h_t(N), N unit, given the
 // supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
-double supportOver(const Cutter& c, double omega, double reach, const TipMotionBounds& tip,
-                   const SearchSample& a, double hKa, const SearchSample& b, double hKb,
-                   const Vec3& N) {
+inline double supportOver(const Cutter& c, double omega, double reach, const TipMotionBounds& tip,
+                          const SearchSample& a, double hKa, const SearchSample& b, double hKb,
+                          const Vec3& N) {
   const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
   const double w = b.t - a.t;
   if (omega == 0 || w <= 0) return h;
