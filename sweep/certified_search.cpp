@@ -8,39 +8,9 @@
 //
 //   1. Upper bound. Every f(t) evaluated is the height of a real point of S, so the
 //      smallest one evaluated, U, satisfies U >= F.
-//   2. Lower bounds of f over an interval I = [ta, tb], w = tb - ta, each proven:
-//   2a. World-fixed plane (the chord bound). For a unit N with N.z < 0 and
-//      h_t(N) = max over K(t) of N.p, every point of K(t) on l has N.p <= h_t(N), so
-//      f(t) >= (h_t(N) - N.x x - N.y y) / N.z, and H >= max over I of h_t(N) bounds f
-//      on I. A cutter point k (tip at the origin) follows g(t) = N.(tip(t) + R(t) k)
-//      with tip linear and |R''k| <= omega^2 |k|, so g lies below its chord plus
-//      omega^2 |k| w^2 / 8 (interpolation error of a function with bounded second
-//      derivative):  H = max(h_ta(N), h_tb(N)) + omega^2 rho w^2 / 8,  rho bounding |k|
-//      over the points that can attain the support during I: each g moves by at most
-//      V w, V = |N.(p1 - p0)| + omega reach, so those points lie in the cap
-//      N.k >= h - 2 V w of K(ta), below s_max = (|N_perp| R + 2 V w - h) / (-N.a) along
-//      the axis: rho = hypot(s_max, R) (the flute top drops out). N is the normal at
-//      the lowest point of K(ta) or K(tb) on l, or, where l misses K or meets its side,
-//      a steep plane leaning out of the footprint.
-//   2b. Cutter-fixed plane. The tangent plane at the lowest point of K(tS) on l, carried
-//      with the cutter: N(t) = R(t) R(tS)^-1 N_S, h = h_tS(N_S) for all t (the cutter
-//      turns rigidly), so K(t) lies in N(t).(p - tip(t)) <= h, and a height z is below
-//      every K(t) of I if g(t) = N(t).(Q - tip(t)) - h > 0 on I, Q = (x, y, z) (with
-//      N.z(t) < 0 on I, g falls as z rises). Its derivatives are in closed form (see
-//      movingPlaneBound), and g >= chord - max(0, sup g'') w^2 / 8 >= min(g(ta), g(tb))
-//      less that margin: only curvature towards the line costs. Where the line meets
-//      a flat face (the bottom of a bull or flat cutter) this plane is the face itself
-//      and the bound is exact; 2a's fixed normal there loses the rim's rotation at
-//      first order.
-//   2c. Grown cutter. Every point of every K(t), t in I, lies within
-//      grow = (|p1 - p0| + omega reach) w / 2 of its place at the middle pose, so the
-//      lowest point of that cutter grown by `grow` (R, r + grow, L + 2 grow, tip grow
-//      lower) bounds f on I, and a line that misses it misses every K(t). Used where l
-//      leaves or grazes a cutter, where planes say little.
-//   2d. Taylor form of 2b at a sample: g(t) >= g + g' tau + m tau^2 / 2 with m the
-//      second derivative at the sample less |g'''| w. Where g curves away from the
-//      line (m > 0) and the sample is a minimum of f (g' ~ 0), this proves both
-//      intervals beside it at once, however wide.
+//   2. Lower bounds of f over an interval I = [ta, tb], each proven (interval_bounds.cpp):
+//      2a a world-fixed plane, 2b a plane fixed to the cutter, 2c a grown cutter, 2d the
+//      Taylor form of 2b at a sample.
 //   3. Search. First the minimum of f: an interval whose end slopes f' = (N.v) / N.z
 //      (v: velocity of the contact point) change sign is split at the secant root until
 //      the best sample is flat (|f'| <= 1e-8 mm per unit t). Then best first: the
@@ -62,6 +32,7 @@
 #include <limits>
 #include <new>
 
+#include "sweep/interval_bounds.h"
 #include "sweep/ray_clearance.h"
 
 namespace scallop {
@@ -76,39 +47,6 @@ constexpr double kClearanceSlope = 1e-6;
 constexpr int kNewtonSteps = 4;  // step 5a's probes after the middle (B3: 1)
 constexpr int kLocateSteps = 8;  // step 5b's secant steps in the ends' bracket
 
-// f at one t: the lowest point of K(t) on l, and the plane to bound neighbours with.
-// A search keeps its samples in raw storage and constructs each one as it is taken:
-// Vec3's member initialisers would otherwise zero all kMaxSamples (39 KB) on every call,
-// which was 15 % of B3's time.
-struct Sample {
-  double t;
-  Vec3 tip, axis;
-  double z;       // f(t), mm; +inf when l misses K(t)
-  Vec3 normal;    // unit, normal.z < 0; zero when no plane is known
-  double hOwn;    // support of K(t) - tip(t) in `normal` (every bound needs it)
-  double slope;   // df/dt where known, else NaN
-  Vec3 vel, acc;  // d tip / dt and d^2 tip / dt^2 at t
-  Vec3 dn, ddn;   // d/dt and d2/dt2 of `normal` carried with the cutter (steps 2b, 2d)
-};
-
-// What step 2's bounds need of the tip's motion: where it is linear (CL data, TCP on),
-// its chord p1 - p0, which is its velocity; on a curve (TCP off, pose_curve.h) bounds of
-// its speed and acceleration over [0, 1], mm per unit t and t^2.
-struct TipBounds {
-  Vec3 delta;
-  bool linear;
-  double speed;  // >= |tip'(t)|: |delta| when linear
-  double accel;  // >= |tip''(t)|: 0 when linear
-  double jerk;   // >= |tip'''(t)|: 0 when linear
-  // A bound of |N . tip'(t)| over the move.
-  double rateAlong(const Vec3& N) const { return linear ? std::fabs(dot(N, delta)) : speed; }
-};
-
-TipBounds tipBoundsOf(const PoseCurve& curve, double speed) {
-  return {curve.tipEnd() - curve.tipStart(), curve.linearTip(), speed, curve.tipAccelBound(),
-          curve.tipJerkBound()};
-}
-
 struct Interval {
   int a, b;      // samples at its ends (ta < tb)
   double lower;  // its proven lower bound of f
@@ -118,49 +56,337 @@ struct Interval {
 // Searches that hit kMaxSamples before their proof closed (expected: none).
 std::atomic<unsigned long long> unprovenSearchCount{0};
 
-// The horizontal unit direction from the footprint of the axis segment [tip, tip + L a]
-// to (x, y), leaned 1e-3 downwards: a steep plane that rises 1 mm per um outside the
-// cutter's shadow. Zero when (x, y) lies on the shadow of the axis itself.
-Vec3 steepNormal(const Cutter& c, const Vec3& tip, const Vec3& a, double x, double y) {
-  const double ex = a.x * c.fluteLength, ey = a.y * c.fluteLength, ee = ex * ex + ey * ey;
-  const double px = x - tip.x, py = y - tip.y;
-  const double s = ee > 0 ? std::clamp((px * ex + py * ey) / ee, 0.0, 1.0) : 0.0;
-  const double dx = px - s * ex, dy = py - s * ey, dd = std::sqrt(dx * dx + dy * dy);
-  if (!(dd > 1e-9)) return {};
-  return normalize(Vec3{dx / dd, dy / dd, -1e-3});
+// One search on the line l through (x, y): the samples of f taken so far, the best of
+// them (step 1's U) and the open intervals of step 3, with one method per step of the
+// derivation above. run() orders them: step 5, then step 3.
+class CertifiedSearch {
+ public:
+  CertifiedSearch(const Cutter& c, const PoseCurve& curve, const TurningBounds& bounds, double x,
+                  double y, double cutoff)
+      : c_(c),
+        curve_(curve),
+        bounds_(bounds),
+        x_(x),
+        y_(y),
+        cutoff_(cutoff),
+        intervalBounds_(c, curve, bounds, x, y),
+        samples_(reinterpret_cast<SearchSample*>(sampleStorage_)) {}
+
+  LowestPoint run();
+
+ private:
+  // Whether a sample met K(t) where it has a plane that is not near vertical: the
+  // cutter-fixed planes of steps 2b and 2d apply from it.
+  static bool smooth(const SearchSample& s) { return s.z < HUGE_VAL && s.normal.z <= -1e-3; }
+  // Step 1.
+  int sampleAt(double t, double zBelow);
+  int take(double t);
+  LowestPoint result() const;
+  // Step 2 (the bounds themselves: intervalBounds_).
+  void supportOf(int i);
+  Interval boundOf(int ia, int ib);
+  // Steps 5 and 4b.
+  void locateFromMiddle();
+  void locateInEndsBracket();
+  bool cleared();
+  // Step 3.
+  bool done(const Interval& iv) const;
+  void push(const Interval& iv);
+  bool bracketsMinimum(const Interval& iv) const;
+  void openBetweenSamples();
+  int pickInterval(bool polish) const;
+  bool clearanceSettles(const Interval& picked);
+  double splitPoint(const Interval& iv) const;
+  LowestPoint branchAndBound();
+
+  const Cutter& c_;
+  const PoseCurve& curve_;
+  const TurningBounds& bounds_;
+  const double x_, y_, cutoff_;
+  const IntervalBounds intervalBounds_;  // step 2's bounds on this line
+
+  alignas(SearchSample) unsigned char sampleStorage_[kMaxSamples * sizeof(SearchSample)];
+  SearchSample* const samples_;
+  int count_ = 0;
+  int best_ = -1;        // the lowest sample so far: U's
+  double U_ = HUGE_VAL;  // step 1's upper bound of F
+
+  Interval open_[kMaxSamples];  // step 3's intervals not yet proven
+  int openCount_ = 0;
+  int clearanceFrom_ = -1, clearanceTries_ = 0;  // step 4b: the last sample it started from
+};
+
+// Step 1: f(t), with a proven lower bound zBelow of it to start Newton from (step 2's
+// bound of the interval being split), and the plane and slope that bound and steer the
+// search from it.
+inline int CertifiedSearch::sampleAt(double t, double zBelow) {
+  SearchSample& s = *new (&samples_[count_]) SearchSample;
+  s.t = t;
+  s.z = HUGE_VAL;
+  s.normal = {};
+  s.slope = std::numeric_limits<double>::quiet_NaN();
+  s.tip = curve_.tip(t);
+  s.vel = curve_.tipVelocity(t);
+  s.acc = curve_.tipAcceleration(t);
+  s.axis = curve_.axis(t);
+  const LowestPoint lp =
+      cutterLowestPoint(c_, s.axis, x_ - s.tip.x, y_ - s.tip.y, zBelow - s.tip.z);
+  if (lp.hit) s.z = lp.z + s.tip.z;
+  if (lp.hit && lp.normal.z <= -1e-3) {
+    s.normal = lp.normal;
+    // f' = (N . v) / N.z, v the velocity of the cutter point at the lowest point.
+    const Vec3 spin = curve_.spin(t);
+    const Vec3 v = s.vel + cross(spin, Vec3{x_, y_, s.z} - s.tip);
+    s.slope = dot(s.normal, v) / s.normal.z;
+    s.dn = cross(spin, s.normal);
+    s.ddn = cross(curve_.spinRate(t), s.normal) + cross(spin, s.dn);
+  } else {
+    s.normal = steepNormal(c_, s.tip, s.axis, x_, y_);
+  }
+  s.hOwn = std::numeric_limits<double>::quiet_NaN();  // supportOf(), when a bound needs it
+  return count_++;
 }
 
-// The chord bound of step 2a: H >= max over [a.t, b.t] of h_t(N), N unit, given the
-// supports hKa, hKb of the cutters at the two poses (tip at the origin) in N.
-double supportOver(const Cutter& c, double omega, double reach, const TipBounds& tip,
-                   const Sample& a, double hKa, const Sample& b, double hKb, const Vec3& N) {
-  const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
-  const double w = b.t - a.t;
-  if (omega == 0 || w <= 0) return h;
-  // The cap of the points that can attain the support during the interval.
-  const double V = tip.rateAlong(N) + omega * reach;
-  const double u = dot(N, a.axis);
-  double rho = reach;
-  if (u < 0) {
-    const double nPerp = std::sqrt(std::max(0.0, 1 - u * u));
-    const double sMax = (nPerp * c.radius + 2 * V * w - hKa) / -u;
-    const double s = std::clamp(sMax, 0.0, c.fluteLength);
-    rho = std::min(reach, std::sqrt(s * s + c.radius * c.radius));
+// Step 1: a sample of f without a bound below it, kept as U where it is the lowest.
+inline int CertifiedSearch::take(double t) {
+  const int i = sampleAt(t, -HUGE_VAL);
+  if (best_ < 0 || samples_[i].z < U_) U_ = samples_[i].z, best_ = i;
+  return i;
+}
+
+// U and its sample's plane, or a miss where U is not below the cutoff.
+inline LowestPoint CertifiedSearch::result() const {
+  if (!(U_ < cutoff_)) return {};
+  LowestPoint out;
+  out.hit = true;
+  out.z = U_;
+  out.normal = samples_[best_].normal;
+  out.t = samples_[best_].t;
+  if (out.normal.z == 0) out.normal = {0, 0, -1};
+  return out;
+}
+
+// Step 2: the support of K(t) - tip(t) in the sample's plane normal, which every bound
+// of step 2 needs and step 5 does not: computed once, on first use.
+inline void CertifiedSearch::supportOf(int i) {
+  SearchSample& s = samples_[i];
+  if (std::isnan(s.hOwn))
+    s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c_, s.axis, s.normal)) : 0;
+}
+
+// Step 2: the interval between two samples with its lower bound, the bounds tried
+// from the cheapest and tightest until one proves it cannot improve U.
+inline Interval CertifiedSearch::boundOf(int ia, int ib) {
+  supportOf(ia), supportOf(ib);
+  const SearchSample &a = samples_[ia], &b = samples_[ib];
+  if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z), U_};  // both ends are known
+  const double enough = std::min(U_ - kProofGap, bounds_.zTop);
+  // The cutter-fixed planes first (tight wherever the line meets the cutters' lower
+  // faces); the world-fixed planes where those do not settle it; where the line
+  // leaves or grazes a cutter, planes say little and the grown cutter decides.
+  double lower = std::max(intervalBounds_.cutterPlane(a, b, a, b, U_),
+                          intervalBounds_.cutterPlane(b, a, a, b, U_));
+  if (!(lower >= enough))
+    lower =
+        std::max({lower, intervalBounds_.worldPlane(a, a, b), intervalBounds_.worldPlane(b, a, b)});
+  if (!(lower >= enough) && U_ < HUGE_VAL &&
+      (intervalBounds_.taylorProves(a, a, b, U_ - kProofGap) ||
+       intervalBounds_.taylorProves(b, a, b, U_ - kProofGap)))
+    lower = U_ - kProofGap;
+  if (!(lower >= enough) && !(smooth(a) && smooth(b)))
+    lower = std::max(lower, intervalBounds_.grownCutter(a, b));
+  return Interval{ia, ib, lower, U_};
+}
+
+// Step 4b, and where it fails the Taylor form of step 2d from the best sample over the
+// whole move: on a flat face (the bottom of a bull or flat cutter) g curves away from
+// the line only through f'', which tangent lines cannot see, while 2d proves it at once.
+inline bool CertifiedSearch::cleared() {
+  if (!(U_ < HUGE_VAL)) return false;
+  if (rayClearsMove(c_, curve_, {x_, y_, U_ - kProofGap}, samples_[best_].t, 0, 1)) return true;
+  if (!smooth(samples_[best_])) return false;
+  supportOf(best_);
+  SearchSample whole[2];
+  whole[0].t = 0, whole[0].tip = curve_.tip(0);
+  whole[1].t = 1, whole[1].tip = curve_.tip(1);
+  return intervalBounds_.taylorProves(samples_[best_], whole[0], whole[1], U_ - kProofGap);
+}
+
+// Step 5a: the minimum of f located without any bound: from the middle, Newton's step
+// with f'' from the cutter's curvature there (lowestPointCurvature), then secant steps,
+// clamped to [0, 1]. On CAM paths two samples.
+inline void CertifiedSearch::locateFromMiddle() {
+  int prev = -1, cur = take(0.5);
+  for (int step = 0; step < kNewtonSteps; ++step) {
+    const SearchSample& s = samples_[cur];
+    if (!std::isfinite(s.slope) || std::fabs(samples_[best_].slope) <= kClearanceSlope) break;
+    double next;
+    if (prev < 0) {
+      const double fpp = lowestPointCurvature(c_, curve_, s.t, Vec3{x_, y_, s.z});
+      if (!(fpp > 0)) break;
+      next = s.t - s.slope / fpp;
+    } else {
+      const SearchSample& p = samples_[prev];
+      if (!std::isfinite(p.slope) || p.slope == s.slope) break;
+      next = s.t - s.slope * (s.t - p.t) / (s.slope - p.slope);
+    }
+    next = std::clamp(next, 0.0, 1.0);
+    if (!(next != s.t)) break;
+    prev = cur, cur = take(next);
   }
-  return h + (omega * omega * rho + tip.accel) * w * w / 8;
+}
+
+// Step 5b, where 5a's minimum does not close the proof: f at the ends, then secant steps
+// inside the bracket of the ends' slopes (bisection where the secant root hugs an end).
+inline void CertifiedSearch::locateInEndsBracket() {
+  int lo = take(0), hi = take(1);
+  for (int step = 0; step < kLocateSteps; ++step) {
+    const SearchSample &A = samples_[lo], &B = samples_[hi];
+    if (std::fabs(samples_[best_].slope) <= kClearanceSlope || !(A.slope < 0 && B.slope > 0)) break;
+    const double w = B.t - A.t, r = A.t + w * (-A.slope / (B.slope - A.slope));
+    const double ts = r > A.t + w / 1024 && r < B.t - w / 1024 ? r : A.t + 0.5 * w;
+    if (!(ts > A.t && ts < B.t)) break;
+    const int is = take(ts);
+    if (samples_[is].slope < 0) {
+      lo = is;
+    } else if (samples_[is].slope > 0) {
+      hi = is;
+    } else {
+      break;
+    }
+  }
+}
+
+// Step 3: an interval is done when its bound proves it cannot improve U (to the gap) or
+// when the bound lies above the whole solid's top: the line meets no cutter there.
+inline bool CertifiedSearch::done(const Interval& iv) const {
+  return iv.lower >= std::min(U_ - kProofGap, bounds_.zTop);
+}
+
+inline void CertifiedSearch::push(const Interval& iv) {
+  if (!done(iv)) open_[openCount_++] = iv;
+}
+
+inline bool CertifiedSearch::bracketsMinimum(const Interval& iv) const {
+  return samples_[iv.a].slope < 0 && samples_[iv.b].slope > 0;
+}
+
+// Step 3's start: the intervals between the samples so far, in order of t.
+inline void CertifiedSearch::openBetweenSamples() {
+  int order[kMaxSamples];  // every sample so far
+  for (int i = 0; i < count_; ++i) order[i] = i;
+  std::sort(order, order + count_, [&](int i, int j) { return samples_[i].t < samples_[j].t; });
+  for (int i = 0; i + 1 < count_; ++i) push(boundOf(order[i], order[i + 1]));
+}
+
+// Step 3's choice of the interval to split: until the best sample is a minimum of f to
+// round-off (`polish`: f' not yet ~ 0, where step 2d would prove the intervals beside it
+// at once), an interval whose ends bracket a root of f' first; otherwise best first:
+// the lowest bound (ties: the earlier in t).
+inline int CertifiedSearch::pickInterval(bool polish) const {
+  int k = -1;
+  for (int i = 0; i < openCount_; ++i) {
+    const Interval& p = open_[i];
+    if (polish && k >= 0 && bracketsMinimum(open_[k]) && !bracketsMinimum(p)) continue;
+    if (k < 0 || (polish && bracketsMinimum(p) && !bracketsMinimum(open_[k])) ||
+        p.lower < open_[k].lower ||
+        (p.lower == open_[k].lower && samples_[p.a].t < samples_[open_[k].a].t))
+      k = i;
+  }
+  return k;
+}
+
+// Step 4b inside step 3: once the minimum is nearly located (the best sample's slope
+// small enough for U to lie within the gap of F where f curves as on CAM paths, or the
+// picked interval does not bracket a minimum), the ray-clearance proof from the best
+// sample may settle the whole move at once: every f(t) > U - 1e-9. Tried from a new best
+// sample at most three times.
+inline bool CertifiedSearch::clearanceSettles(const Interval& picked) {
+  if (best_ != clearanceFrom_ && clearanceTries_ < 3 && U_ < HUGE_VAL &&
+      (std::fabs(samples_[best_].slope) <= kClearanceSlope || !bracketsMinimum(picked))) {
+    clearanceFrom_ = best_, ++clearanceTries_;
+    return rayClearsMove(c_, curve_, {x_, y_, U_ - kProofGap}, samples_[best_].t, 0, 1);
+  }
+  return false;
+}
+
+// Step 3's split point of an interval: the secant root of f' where its ends bracket a
+// minimum; otherwise from the lower end, the width its plane can prove (the loss of the
+// current bound is second order in the width near a minimum); else the middle.
+inline double CertifiedSearch::splitPoint(const Interval& iv) const {
+  const SearchSample &A = samples_[iv.a], &B = samples_[iv.b];
+  const double w = B.t - A.t;
+  double ts = A.t + 0.5 * w;
+  bool chosen = false;
+  if (bracketsMinimum(iv)) {  // f' changes sign inside: its secant root
+    const double r = A.t + w * (-A.slope / (B.slope - A.slope));
+    if (r > A.t + w / 1024 && r < B.t - w / 1024) ts = r, chosen = true;
+  }
+  if (!chosen && (std::isfinite(A.z) || std::isfinite(B.z))) {
+    const bool fromA = A.z <= B.z;
+    const SearchSample& low = fromA ? A : B;
+    const double loss = low.z - iv.lower;
+    const double allowed = low.z - (U_ - kProofGap);
+    double step = 0.5;
+    if (loss > 0 && allowed > 0) step = std::clamp(0.8 * std::sqrt(allowed / loss), 1.0 / 64, 0.5);
+    ts = fromA ? A.t + step * w : B.t - step * w;
+  }
+  return ts;
+}
+
+// Step 3: branch and bound over t from every sample so far, until every interval's
+// bound is at least U - 1e-9 mm (F in [U - 1e-9, U]) or the cutoff, or step 4b settles
+// the whole move.
+inline LowestPoint CertifiedSearch::branchAndBound() {
+  clearanceFrom_ = best_, clearanceTries_ = 1;  // step 5 tried it from the best sample
+  openBetweenSamples();
+  while (openCount_ > 0 && count_ < kMaxSamples) {
+    const bool polish = !(std::fabs(samples_[best_].slope) <= kFlatSlope);
+    const int k = pickInterval(polish);
+    if (clearanceSettles(open_[k])) {
+      openCount_ = 0;
+      break;
+    }
+    Interval iv = open_[k];
+    if (iv.U > U_) {  // bounded before U fell: bound it again, and pick anew
+      open_[k] = boundOf(iv.a, iv.b);
+      if (done(open_[k])) open_[k] = open_[--openCount_];
+      continue;
+    }
+    if (done(iv)) {
+      if (!(polish && bracketsMinimum(iv))) break;  // proven: F >= U - 1e-9, or no hit
+      open_[k] = open_[--openCount_];
+      continue;
+    }
+    if (iv.lower >= cutoff_) return {};  // proven: F >= cutoff
+    open_[k] = open_[--openCount_];
+
+    const double ts = splitPoint(iv);
+    if (!(ts > samples_[iv.a].t && ts < samples_[iv.b].t)) continue;  // below double resolution
+    const int is = sampleAt(ts, iv.lower);
+    if (samples_[is].z < U_) U_ = samples_[is].z, best_ = is;
+    // Children that the new U already proves are dropped by push(), as are open
+    // intervals, lazily, when picked.
+    push(boundOf(iv.a, is));
+    push(boundOf(is, iv.b));
+  }
+  if (openCount_ > 0 && count_ >= kMaxSamples)
+    unprovenSearchCount.fetch_add(1, std::memory_order_relaxed);
+  return result();
+}
+
+// Step 5, then step 3: the minimum located without any bound and the whole move proven
+// at once (step 4b, or 2d over [0, 1]); where f' is unknown, nothing brackets a root, or
+// the proof still fails, the branch and bound takes over with every sample so far.
+inline LowestPoint CertifiedSearch::run() {
+  locateFromMiddle();
+  if (cleared()) return result();
+  locateInEndsBracket();
+  if (cleared()) return result();
+  return branchAndBound();
 }
 
 }  // namespace
-
-double turningSupport(const Cutter& cutter, const PoseCurve& curve, const TurningBounds& bounds,
-                      const Vec3& N) {
-  Sample a, b;
-  a.t = 0, a.tip = curve.tip(0), a.axis = curve.axis(0);
-  b.t = 1, b.tip = curve.tip(1), b.axis = curve.axis(1);
-  return supportOver(cutter, curve.turnRate(), bounds.reach, tipBoundsOf(curve, bounds.tipSpeed), a,
-                     dot(N, cutterSupport(cutter, a.axis, N)), b,
-                     dot(N, cutterSupport(cutter, b.axis, N)), N);
-}
 
 unsigned long long unprovenCertifiedSearches() {
   return unprovenSearchCount.load();
@@ -168,334 +394,8 @@ unsigned long long unprovenCertifiedSearches() {
 
 LowestPoint certifiedLowestPoint(const Cutter& c, const PoseCurve& curve,
                                  const TurningBounds& bounds, double x, double y, double cutoff) {
-  const double omega = curve.turnRate();
-  const TipBounds tipMotion = tipBoundsOf(curve, bounds.tipSpeed);
-  const double accel = tipMotion.accel, jerk = tipMotion.jerk;
-
-  alignas(Sample) unsigned char sampleStorage[kMaxSamples * sizeof(Sample)];
-  Sample* const samples = reinterpret_cast<Sample*>(sampleStorage);
-  int count = 0;
-  // f(t), with a proven lower bound zBelow of it to start Newton from (step 2's bound
-  // of the interval being split).
-  auto sampleAt = [&](double t, double zBelow) -> int {
-    Sample& s = *new (&samples[count]) Sample;
-    s.t = t;
-    s.z = HUGE_VAL;
-    s.normal = {};
-    s.slope = std::numeric_limits<double>::quiet_NaN();
-    s.tip = curve.tip(t);
-    s.vel = curve.tipVelocity(t);
-    s.acc = curve.tipAcceleration(t);
-    s.axis = curve.axis(t);
-    const LowestPoint lp = cutterLowestPoint(c, s.axis, x - s.tip.x, y - s.tip.y, zBelow - s.tip.z);
-    if (lp.hit) s.z = lp.z + s.tip.z;
-    if (lp.hit && lp.normal.z <= -1e-3) {
-      s.normal = lp.normal;
-      // f' = (N . v) / N.z, v the velocity of the cutter point at the lowest point.
-      const Vec3 spin = curve.spin(t);
-      const Vec3 v = s.vel + cross(spin, Vec3{x, y, s.z} - s.tip);
-      s.slope = dot(s.normal, v) / s.normal.z;
-      s.dn = cross(spin, s.normal);
-      s.ddn = cross(curve.spinRate(t), s.normal) + cross(spin, s.dn);
-    } else {
-      s.normal = steepNormal(c, s.tip, s.axis, x, y);
-    }
-    s.hOwn = std::numeric_limits<double>::quiet_NaN();  // supportOf(), when a bound needs it
-    return count++;
-  };
-  // The support of K(t) - tip(t) in the sample's plane normal, which every bound of
-  // step 2 needs and step 5 does not: computed once, on first use.
-  auto supportOf = [&](int i) {
-    Sample& s = samples[i];
-    if (std::isnan(s.hOwn))
-      s.hOwn = s.normal.z != 0 ? dot(s.normal, cutterSupport(c, s.axis, s.normal)) : 0;
-  };
-  // Step 2a's bound over [a.t, b.t] from one end's plane, less its round-off.
-  auto planeBound = [&](const Sample& from, const Sample& a, const Sample& b) {
-    const Vec3& N = from.normal;
-    if (N.z == 0) return -HUGE_VAL;
-    const Sample& other = &from == &a ? b : a;
-    const double hOther = dot(N, cutterSupport(c, other.axis, N));
-    const double H =
-        &from == &a ? supportOver(c, omega, bounds.reach, tipMotion, a, from.hOwn, b, hOther, N)
-                    : supportOver(c, omega, bounds.reach, tipMotion, a, hOther, b, from.hOwn, N);
-    const double nq = N.x * x + N.y * y;
-    const double z = (H - nq) / N.z;
-    return z - 1e-12 * (1 + std::fabs(H) + std::fabs(nq)) / -N.z;
-  };
-  // Steps 2b and 2d share the plane fixed to the cutter at a sample S and its
-  // derivatives: g(t) = N(t).(Q - tip(t)) - h_S with N(t) = R(t) R(tS)^-1 N_S, so that
-  //   g'  = N'.(Q - tip) - N.tip',                N'  = Omega x N,
-  //   g'' = N''.(Q - tip) - 2 N'.tip' - N.tip'',  N'' = Omega' x N + Omega x (Omega x N),
-  // and |g'''| <= omega^3 D + 3 omega^2 S + 3 omega A + J (|N^(k)| <= omega^k, D >=
-  // |Q - tip|, S, A, J >= |tip'|, |tip''|, |tip'''|; A = J = 0 for a linear tip).
-  const double move = tipMotion.speed;    // bounds the tip's path length, mm
-  auto thirdDerivative = [&](double D) {  // the bound of |g'''| above
-    return omega * omega * omega * D + 3 * omega * omega * move + 3 * omega * accel + jerk;
-  };
-  auto distanceBound = [&](const Sample& a, const Sample& b, double zLow, double zHigh) {
-    double D = 0;  // >= |Q - tip(t)| for t in [a.t, b.t] and Q.z in [zLow, zHigh]
-    for (const Sample* e : {&a, &b})
-      D = std::max(D, std::sqrt((x - e->tip.x) * (x - e->tip.x) + (y - e->tip.y) * (y - e->tip.y)) +
-                          std::max(std::fabs(zHigh - e->tip.z), std::fabs(zLow - e->tip.z)));
-    return D + move;
-  };
-  // Step 2b: g >= its chord - max(0, sup g'') w^2 / 8 (only curvature towards the line
-  // costs: a concave g lies above its chord), and the chord >= the smaller end value;
-  // each end's g >= margin moves the plane up by the margin. The heights where this is
-  // claimed are [lowest tip - reach, U]: Q's z enters g'' and D there.
-  auto movingPlaneBound = [&](const Sample& from, const Sample& to, const Sample& a,
-                              const Sample& b, double U) {
-    const Vec3& Na = from.normal;
-    if (!(from.z < HUGE_VAL) || !(Na.z <= -1e-3) || !(U < HUGE_VAL)) return -HUGE_VAL;
-    const Vec3 Nb = curve.carry(Na, from.t, to.t);
-    const double w = b.t - a.t;
-    if (std::max(Na.z, Nb.z) + omega * w >= 0) return -HUGE_VAL;  // may turn horizontal
-    const double h = from.hOwn;
-    const double floor = std::min(a.tip.z, b.tip.z) - bounds.reach;
-    const double D = distanceBound(a, b, floor, U);
-    const double cross2 = 2 * dot(from.dn, from.vel) + dot(Na, from.acc);
-    double gpp = -HUGE_VAL;  // sup of g'' over the interval and those heights
-    for (double z : {floor, U})
-      gpp = std::max(gpp, dot(from.ddn, Vec3{x, y, z} - from.tip) - cross2);
-    gpp += thirdDerivative(D) * w;
-    const double margin = std::max(0.0, gpp) * w * w / 8;
-    auto planeZ = [&](const Vec3& N, const Sample& e) {
-      const double nq = N.x * (x - e.tip.x) + N.y * (y - e.tip.y);
-      return e.tip.z + (margin + h - nq) / N.z;
-    };
-    const double z0 = std::min({planeZ(Na, from), planeZ(Nb, to), U});
-    return std::max(z0, floor) - 1e-12 * (1 + std::fabs(z0) + D) / -std::max(Na.z, Nb.z);
-  };
-  // Step 2d: whether height z is proven below every K(t), t in [a.t, b.t], by the Taylor
-  // form at `from`: g(t) >= g + g' tau + m tau^2 / 2 with m = g''(tS) - |g'''| w, whose
-  // minimum over tau is closed form. Where g curves away from the line (m > 0: the
-  // convex case that costs step 2b its margin) this proves a whole interval from one
-  // sample at a minimum of f, where g' ~ 0.
-  auto taylorProves = [&](const Sample& from, const Sample& a, const Sample& b, double z) {
-    const Vec3& N = from.normal;
-    if (!(from.z < HUGE_VAL) || !(N.z <= -1e-3)) return false;
-    const double w = b.t - a.t;
-    if (std::max(N.z, curve.carry(N, from.t, from.t == a.t ? b.t : a.t).z) + omega * w >= 0)
-      return false;
-    const Vec3 q = Vec3{x, y, z} - from.tip;
-    const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, from.vel);
-    const double D = distanceBound(a, b, z, z);
-    const double m =
-        dot(from.ddn, q) - 2 * dot(from.dn, from.vel) - dot(N, from.acc) - thirdDerivative(D) * w;
-    const double ta = a.t - from.t, tb = b.t - from.t;
-    double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
-    if (m > 0 && -g1 / m > ta && -g1 / m < tb) low = std::min(low, g0 - 0.5 * g1 * g1 / m);
-    return low > 1e-13 * (1 + D);
-  };
-  // Step 2c's bound: every K(t) of the interval lies within delta of K at its middle
-  // pose, so the lowest point of that cutter grown by delta bounds them all (+inf: the
-  // line misses every one).
-  // |dp/dt| of any cutter point: the tip's speed plus omega reach. On a curved tip the
-  // interval's own speed bound, |tip'(tc)| + A w / 2, is tighter than the move's.
-  auto grownBound = [&](const Sample& a, const Sample& b) {
-    const double tc = 0.5 * (a.t + b.t), w = b.t - a.t;
-    const double tipSpeed =
-        tipMotion.linear ? move : std::min(move, length(curve.tipVelocity(tc)) + 0.5 * accel * w);
-    const double speed = tipSpeed + omega * bounds.reach;
-    const double grow = speed * 0.5 * w * (1 + 1e-12) + 1e-12;
-    const Vec3 axis = curve.axis(tc), tip = curve.tip(tc) - axis * grow;
-    // K (+) Ball(grow) lies in the cutter with R, r grown by `grow` and L by twice that,
-    // whose tip is `grow` lower along the axis (the same core, swept a ball wider).
-    Cutter grown = c;
-    grown.radius += grow, grown.cornerRadius += grow, grown.fluteLength += 2 * grow;
-    const LowestPoint lp = cutterLowestPoint(grown, axis, x - tip.x, y - tip.y);
-    if (!lp.hit) return HUGE_VAL;
-    return lp.z + tip.z - 1e-12 * (1 + std::fabs(lp.z) + std::fabs(tip.z));
-  };
-  auto smooth = [](const Sample& s) { return s.z < HUGE_VAL && s.normal.z <= -1e-3; };
-  auto boundOf = [&](int ia, int ib, double U) {
-    supportOf(ia), supportOf(ib);
-    const Sample &a = samples[(ia)], &b = samples[(ib)];
-    if (a.t == b.t) return Interval{ia, ib, std::min(a.z, b.z), U};  // both ends are known
-    const double enough = std::min(U - kProofGap, bounds.zTop);
-    // The cutter-fixed planes first (tight wherever the line meets the cutters' lower
-    // faces); the world-fixed planes where those do not settle it; where the line
-    // leaves or grazes a cutter, planes say little and the grown cutter decides.
-    double lower = std::max(movingPlaneBound(a, b, a, b, U), movingPlaneBound(b, a, a, b, U));
-    if (!(lower >= enough)) lower = std::max({lower, planeBound(a, a, b), planeBound(b, a, b)});
-    if (!(lower >= enough) && U < HUGE_VAL &&
-        (taylorProves(a, a, b, U - kProofGap) || taylorProves(b, a, b, U - kProofGap)))
-      lower = U - kProofGap;
-    if (!(lower >= enough) && !(smooth(a) && smooth(b))) lower = std::max(lower, grownBound(a, b));
-    return Interval{ia, ib, lower, U};
-  };
-
-  int best = -1;
-  double U = HUGE_VAL;
-  auto take = [&](double t) {
-    const int i = sampleAt(t, -HUGE_VAL);
-    if (best < 0 || samples[i].z < U) U = samples[i].z, best = i;
-    return i;
-  };
-  auto result = [&]() -> LowestPoint {
-    if (!(U < cutoff)) return {};
-    LowestPoint out;
-    out.hit = true;
-    out.z = U;
-    out.normal = samples[(best)].normal;
-    out.t = samples[(best)].t;
-    if (out.normal.z == 0) out.normal = {0, 0, -1};
-    return out;
-  };
-  // Step 4b, and where it fails the Taylor form of step 2d from the best sample over the
-  // whole move: on a flat face (the bottom of a bull or flat cutter) g curves away from
-  // the line only through f'', which tangent lines cannot see, while 2d proves it at once.
-  auto cleared = [&] {
-    if (!(U < HUGE_VAL)) return false;
-    if (rayClearsMove(c, curve, {x, y, U - kProofGap}, samples[best].t, 0, 1)) return true;
-    if (!smooth(samples[best])) return false;
-    supportOf(best);
-    Sample whole[2];
-    whole[0].t = 0, whole[0].tip = curve.tip(0);
-    whole[1].t = 1, whole[1].tip = curve.tip(1);
-    return taylorProves(samples[best], whole[0], whole[1], U - kProofGap);
-  };
-
-  // Step 5: the minimum of f located without any bound, then the whole move proven at
-  // once by step 4b. (a) From the middle, Newton's step with f'' from the cutter's
-  // curvature there (lowestPointCurvature), then secant steps, clamped to [0, 1]: on CAM
-  // paths two samples. (b) Where that does not close the proof, secant steps inside the
-  // bracket of the ends. Where f' is unknown, nothing brackets a root, or the proof
-  // still fails, step 3's branch and bound takes over with every sample so far.
-  {
-    int prev = -1, cur = take(0.5);
-    for (int step = 0; step < kNewtonSteps; ++step) {
-      const Sample& s = samples[cur];
-      if (!std::isfinite(s.slope) || std::fabs(samples[best].slope) <= kClearanceSlope) break;
-      double next;
-      if (prev < 0) {
-        const double fpp = lowestPointCurvature(c, curve, s.t, Vec3{x, y, s.z});
-        if (!(fpp > 0)) break;
-        next = s.t - s.slope / fpp;
-      } else {
-        const Sample& p = samples[prev];
-        if (!std::isfinite(p.slope) || p.slope == s.slope) break;
-        next = s.t - s.slope * (s.t - p.t) / (s.slope - p.slope);
-      }
-      next = std::clamp(next, 0.0, 1.0);
-      if (!(next != s.t)) break;
-      prev = cur, cur = take(next);
-    }
-  }
-  if (cleared()) return result();
-  const int s0 = take(0), s1 = take(1);
-  {
-    int lo = s0, hi = s1;
-    for (int step = 0; step < kLocateSteps; ++step) {
-      const Sample &A = samples[lo], &B = samples[hi];
-      if (std::fabs(samples[best].slope) <= kClearanceSlope || !(A.slope < 0 && B.slope > 0)) break;
-      const double w = B.t - A.t, r = A.t + w * (-A.slope / (B.slope - A.slope));
-      const double ts = r > A.t + w / 1024 && r < B.t - w / 1024 ? r : A.t + 0.5 * w;
-      if (!(ts > A.t && ts < B.t)) break;
-      const int is = take(ts);
-      if (samples[is].slope < 0) {
-        lo = is;
-      } else if (samples[is].slope > 0) {
-        hi = is;
-      } else {
-        break;
-      }
-    }
-  }
-  if (cleared()) return result();
-  int clearanceFrom = best, clearanceTries = 1;  // step 4b: the last sample it started from
-
-  Interval open[kMaxSamples];
-  int openCount = 0;
-  // An interval is done when its bound proves it cannot improve U (to the gap) or when
-  // the bound lies above the whole solid's top: the line meets no cutter there.
-  auto done = [&](const Interval& iv) { return iv.lower >= std::min(U - kProofGap, bounds.zTop); };
-  auto push = [&](const Interval& iv) {
-    if (!done(iv)) open[(openCount++)] = iv;
-  };
-  {                          // The intervals between the samples so far, in order of t.
-    int order[kMaxSamples];  // every sample so far
-    for (int i = 0; i < count; ++i) order[i] = i;
-    std::sort(order, order + count, [&](int i, int j) { return samples[i].t < samples[j].t; });
-    for (int i = 0; i + 1 < count; ++i) push(boundOf(order[i], order[i + 1], U));
-  }
-
-  auto bracketsMinimum = [&](const Interval& iv) {
-    return samples[iv.a].slope < 0 && samples[iv.b].slope > 0;
-  };
-  while (openCount > 0 && count < kMaxSamples) {
-    // Until the best sample is a minimum of f to round-off (f' ~ 0, where step 2d proves
-    // the intervals beside it at once), an interval whose ends bracket a root of f' is
-    // split first; otherwise best first: the lowest bound (ties: the earlier in t).
-    const bool polish = !(std::fabs(samples[best].slope) <= kFlatSlope);
-    int k = -1;
-    for (int i = 0; i < openCount; ++i) {
-      const Interval& p = open[i];
-      if (polish && k >= 0 && bracketsMinimum(open[k]) && !bracketsMinimum(p)) continue;
-      if (k < 0 || (polish && bracketsMinimum(p) && !bracketsMinimum(open[k])) ||
-          p.lower < open[k].lower ||
-          (p.lower == open[k].lower && samples[p.a].t < samples[open[k].a].t))
-        k = i;
-    }
-    // Step 4b: once the minimum is nearly located (the best sample's slope small enough
-    // for U to lie within the gap of F where f curves as on CAM paths, or no interval
-    // left that brackets a minimum), the ray-clearance proof from the best sample may
-    // settle the whole move at once: every f(t) > U - 1e-9. Tried from a new best
-    // sample at most three times.
-    if (best != clearanceFrom && clearanceTries < 3 && U < HUGE_VAL &&
-        (std::fabs(samples[best].slope) <= kClearanceSlope || !bracketsMinimum(open[k]))) {
-      clearanceFrom = best, ++clearanceTries;
-      if (rayClearsMove(c, curve, {x, y, U - kProofGap}, samples[best].t, 0, 1)) {
-        openCount = 0;
-        break;
-      }
-    }
-    Interval iv = open[k];
-    if (iv.U > U) {  // bounded before U fell: bound it again, and pick anew
-      open[k] = boundOf(iv.a, iv.b, U);
-      if (done(open[k])) open[k] = open[--openCount];
-      continue;
-    }
-    if (done(iv)) {
-      if (!(polish && bracketsMinimum(iv))) break;  // proven: F >= U - 1e-9, or no hit
-      open[k] = open[--openCount];
-      continue;
-    }
-    if (iv.lower >= cutoff) return {};  // proven: F >= cutoff
-    open[(k)] = open[(--openCount)];
-
-    const Sample &A = samples[(iv.a)], &B = samples[(iv.b)];
-    const double w = B.t - A.t;
-    double ts = A.t + 0.5 * w;
-    bool chosen = false;
-    if (bracketsMinimum(iv)) {  // f' changes sign inside: its secant root
-      const double r = A.t + w * (-A.slope / (B.slope - A.slope));
-      if (r > A.t + w / 1024 && r < B.t - w / 1024) ts = r, chosen = true;
-    }
-    if (!chosen && (std::isfinite(A.z) || std::isfinite(B.z))) {
-      // From the lower end, the width its plane can prove: the loss of the current
-      // bound is second order in the width near a minimum.
-      const bool fromA = A.z <= B.z;
-      const Sample& low = fromA ? A : B;
-      const double loss = low.z - iv.lower;
-      const double allowed = low.z - (U - kProofGap);
-      double step = 0.5;
-      if (loss > 0 && allowed > 0)
-        step = std::clamp(0.8 * std::sqrt(allowed / loss), 1.0 / 64, 0.5);
-      ts = fromA ? A.t + step * w : B.t - step * w;
-    }
-    if (!(ts > A.t && ts < B.t)) continue;  // below double resolution in t: done
-    const int is = sampleAt(ts, iv.lower);
-    if (samples[(is)].z < U) U = samples[(is)].z, best = is;
-    // Children that the new U already proves are dropped by push(), as are open
-    // intervals, lazily, when picked.
-    push(boundOf(iv.a, is, U));
-    push(boundOf(is, iv.b, U));
-  }
-  if (openCount > 0 && count >= kMaxSamples)
-    unprovenSearchCount.fetch_add(1, std::memory_order_relaxed);
-  return result();
+  CertifiedSearch search(c, curve, bounds, x, y, cutoff);
+  return search.run();
 }
 
 }  // namespace scallop

@@ -2,7 +2,8 @@
 // lowest point on a vertical line where the fast paths of SweptMove (swept_move.cpp: the
 // cutoff's ray clearance, the rim contact) do not settle it, and the chord bound of the
 // support function that SweptMove::support shares. Internal to sweep/: SweptMove is its
-// one caller. The derivation is in certified_search.cpp.
+// one caller. The derivation is in certified_search.cpp, that of its bounds (and of the
+// chord bound, defined there) in interval_bounds.cpp.
 #pragma once
 
 #include "sweep/cutter.h"
@@ -23,7 +24,7 @@ struct TurningBounds {
 };
 
 // >= max over t in [0, 1] of the support of K(t) in the unit direction N (the chord bound,
-// certified_search.cpp step 2a, over the whole move), before round-off.
+// interval_bounds.cpp step 2a, over the whole move), before round-off.
 double turningSupport(const Cutter& cutter, const PoseCurve& curve, const TurningBounds& bounds,
                       const Vec3& N);
 

@@ -33,8 +33,8 @@
 // ray_clearance.cpp) takes the tip's speed, acceleration and jerk into its bounds.
 #pragma once
 
-#include "sweep/pose.h"
 #include "base/vec3.h"
+#include "sweep/pose.h"
 
 namespace scallop {
 
@@ -112,7 +112,7 @@ class PoseCurve {
   // The same, written into `f` (no copy of its ten vectors).
   void frame(double t, PoseFrame& f) const;
   // A direction fixed to the cutter, carried from its pose at ta to its pose at tb:
-  // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: certified_search.cpp.)
+  // R(tb) R(ta)^-1 v. (Planes fixed to the cutter move with it: interval_bounds.cpp.)
   Vec3 carry(const Vec3& v, double ta, double tb) const;
 
   const Vec3& tipStart() const { return tip0_; }

@@ -11,9 +11,9 @@
 //
 //   1.-3. and 5. The certified search (certified_search.cpp): every f(t) evaluated is a
 //      real height, so the smallest, U, is >= F; proven lower bounds of f over
-//      intervals of t (planes fixed to the world or to the cutter, a grown cutter, a
-//      Taylor form) are split best first until they reach U - 1e-9 mm, after the
-//      minimum of f is located and, where it can, proven at once.
+//      intervals of t (interval_bounds.cpp: planes fixed to the world or to the cutter,
+//      a grown cutter, a Taylor form) are split best first until they reach
+//      U - 1e-9 mm, after the minimum of f is located and, where it can, proven at once.
 //   4. Ray clearance (ray_clearance.cpp): seen from the cutter, the point Q = (x, y, z)
 //      moves along a curve within omega^2 D + 2 omega |p1 - p0| (times tau^2 / 2) of its
 //      tangent line, and the distance from that line to the cutter's convex core is
