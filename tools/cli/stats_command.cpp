@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,10 +37,10 @@ int runStats(const StatsArgs& args) {
   SurfaceStats s;
   json doc = surfaceStatsDocument(map, region, parseLevelling(args.level, "--level"), &s);
   doc["file"] = args.file;
-  std::unique_ptr<ProfileRoughness> profile;
+  std::optional<ProfileRoughness> profile;
   if (!args.profile.empty()) {
-    profile = std::make_unique<ProfileRoughness>(
-        profileRoughness(map, args.profile, args.stepMm, args.cutoffMm, "--profile", "--cutoff"));
+    profile =
+        profileRoughness(map, args.profile, args.stepMm, args.cutoffMm, "--profile", "--cutoff");
     doc["profile"] = profileRoughnessDocument(*profile);
   }
   if (args.json) {
