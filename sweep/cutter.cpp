@@ -16,6 +16,22 @@ const char* toString(CutterType type) {
       return "flat";
     case CutterType::Bull:
       return "bull";
+    case CutterType::TaperBall:
+      return "taper_ball";
+    case CutterType::TaperBull:
+      return "taper_bull";
+    case CutterType::Cone:
+      return "cone";
+    case CutterType::Barrel:
+      return "barrel";
+    case CutterType::TaperBarrel:
+      return "taper_barrel";
+    case CutterType::Oval:
+      return "oval";
+    case CutterType::Lens:
+      return "lens";
+    case CutterType::Profile:
+      return "profile";
   }
   return "?";
 }
@@ -71,6 +87,10 @@ Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double 
                                       std::to_string(cornerRadius));
       c.cornerRadius = cornerRadius;
       break;
+    default:
+      throw InputError(fieldPrefix + ".type", std::string("a ") + toString(type) +
+                                                  " cutter is made from its profile, not from "
+                                                  "radius and corner radius");
   }
   if (std::isnan(fluteLength) || std::isinf(fluteLength))
     throw InputError(flField, "must be a finite number of mm");

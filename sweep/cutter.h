@@ -7,11 +7,28 @@
 // K is convex; this is what makes the swept-solid heights exact and cheap.
 #pragma once
 
+#include <memory>
 #include <string>
+
+#include "sweep/cutter_profile.h"
 
 namespace scallop {
 
-enum class CutterType { Ball, Flat, Bull };
+// Ball, flat and bull have their own kernel; every other type is a CutterProfile
+// (CONVENTIONS.md "Cutter shapes": the named types' parameters; `profile` a free chain).
+enum class CutterType {
+  Ball,
+  Flat,
+  Bull,
+  TaperBall,
+  TaperBull,
+  Cone,
+  Barrel,
+  TaperBarrel,
+  Oval,
+  Lens,
+  Profile
+};
 
 const char* toString(CutterType type);
 // Parses "ball" | "flat" | "bull"; throws InputError naming `field` otherwise.
@@ -54,6 +71,12 @@ struct Cutter {
   double bottomRadius() const { return radius - cornerRadius; }  // Rb, mm
 
   CutterTeeth teeth;  // read by the "teeth" cutting model only
+
+  // Every type but ball, flat and bull: its profile (then `radius` is its largest
+  // radius, `fluteLength` its L, `cornerRadius` 0), swept by the general kernel; null
+  // for ball, flat and bull.
+  std::shared_ptr<const CutterProfile> profile;
+  bool general() const { return profile != nullptr; }
 
   // The solid of revolution about the spindle axis that holds the cutter at every
   // spindle angle: the profile pushed out by the runout (Rb + runout, r, L), so a ball
