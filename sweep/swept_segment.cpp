@@ -491,7 +491,15 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
   return lowestPoint(x, y, nullptr);
 }
 
-LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
+// Inlined into SweptMove::envelopeLowestPoint (the same unity unit), the constant-axis
+// cell's one call: GCC's heuristics dropped it once the Cutter grew a profile pointer, for
+// 4 % more instructions a cell on B1 (scripts/perf-guard.sh). Other callers get the usual
+// out-of-line copy, which is what the attribute's warning is about.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wattributes"
+__attribute__((always_inline)) LowestPoint SweptSegment::lowestPoint(double x, double y,
+                                                                     SectionMemo* memo,
+                                                                     double cutoff) const {
   const double qx = x - start_.x, qy = y - start_.y;
 
   // A plunge, a retract or a zero-length move: the cutter slides along l itself.
@@ -543,5 +551,7 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, dou
   out.normal = sec.normal;
   return out;
 }
+
+#pragma GCC diagnostic pop
 
 }  // namespace scallop
