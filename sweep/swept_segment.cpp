@@ -36,6 +36,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sweep/profile_lowest_point.h"
+
 namespace scallop {
 
 namespace {
@@ -116,6 +118,7 @@ SupportWithSlope supportWithSlope(const Cutter& c, const Vec3& a, const Vec3& v,
 }  // namespace
 
 Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
+  if (c.general()) return profileSupport(*c.profile, a, dir);
   return supportWithSlope(c, a, dir, Vec3{}).point;
 }
 
@@ -268,6 +271,7 @@ LowestPoint lowestPointOfCutter(const Cutter& c, const Vec3& a, double zMin, dou
 }  // namespace
 
 LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y, double zBelow) {
+  if (c.general()) return profileLowestPoint(*c.profile, a, x, y, zBelow);
   return lowestPointOfCutter(c, a, cutterSupport(c, a, Vec3{0, 0, -1}).z, x, y, zBelow);
 }
 
