@@ -89,7 +89,10 @@ Vec3 rimOrTorusPoint(const Cutter& c, const Vec3& a, const Vec3& e, const Vec3& 
   return a * c.cornerRadius + e * c.bottomRadius() + v * rOverLength;
 }
 
-SupportWithSlope supportWithSlope(const Cutter& c, const Vec3& a, const Vec3& v, const Vec3& dv) {
+inline __attribute__((always_inline)) SupportWithSlope supportWithSlope(const Cutter& c,
+                                                                        const Vec3& a,
+                                                                        const Vec3& v,
+                                                                        const Vec3& dv) {
   const double va = dot(v, a);
   // The radial part of v, re-orthogonalised: for v (anti)parallel to a the first
   // subtraction leaves round-off that may point along a itself. Below 1e-14 |v| the
