@@ -203,6 +203,27 @@ TEST_F(FrameRun, LinesThatMissTheStockAreNanInEveryHeightFileAndCounted) {
   EXPECT_EQ(run("export " + path("out/heights.gsf") + " --to " + path("heights.x3p")).status, 0);
 }
 
+// Bands of a frame's map (void cells and all) are the in-memory map's bytes.
+TEST_F(FrameRun, BandsGiveTheInMemoryFilesAndCounts) {
+  write("wall.cl", "25 -2 -0.4 1 0 0\n19.7 -2 -0.4 1 0 0\n19.7 12 -0.4 1 0 0\n25 12 -0.4 1 0 0\n");
+  write("job.json", R"({"tool": {"type": "ball", "radius": 1},
+    "stock": {"min": [0, 0, -5], "max": [20, 10, 0]},
+    "grid": {"spacing": 0.1, "frame": {"origin": [20, -1, -5], "u": [0, 1, 0],
+             "normal": [1, 0, 0], "size": [12, 5]}},
+    "path": {"file": "wall.cl"}})");
+  const test::CliRun whole = run("simulate " + path("job.json") + " -o " + path("mem") + " --json");
+  const test::CliRun bands =
+      run("simulate " + path("job.json") + " -o " + path("band") + " --tile-rows 16 --json");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  ASSERT_EQ(bands.status, 0) << bands.err;
+  EXPECT_EQ(test::slurp(dir_ / "mem" / "heights.gsf"), test::slurp(dir_ / "band" / "heights.gsf"));
+  const json a = json::parse(whole.out), b = json::parse(bands.out);
+  EXPECT_TRUE(b.contains("tiled"));
+  EXPECT_EQ(a.at("measurements").at("frame"), b.at("measurements").at("frame"));
+  EXPECT_EQ(a.at("measurements").at("frame").at("void_cells"), 2 * 10 * 50);  // y < 0, y > 10
+  EXPECT_EQ(a.at("measurements").at("min_height"), b.at("measurements").at("min_height"));
+}
+
 TEST_F(FrameRun, BadFramesAreErrorsNamingTheFieldAndWriteNothing) {
   write("line.cl", "0 5 -0.5\n10 5 -0.5\n");
   const std::vector<std::pair<std::string, std::string>> cases = {
