@@ -73,6 +73,11 @@ Profile extractProfile(const ZMap& map, double x0, double y0, double x1, double 
     const double u = fi - double(i), v = fj - double(j);
     p.height[size_t(k)] = (1 - u) * (1 - v) * map.at(i, j) + u * (1 - v) * map.at(i1, j) +
                           (1 - u) * v * map.at(i, j1) + u * v * map.at(i1, j1);
+    if (std::isnan(p.height[size_t(k)]))
+      throw InputError(where, "the line from " + point(x0, y0) + " to " + point(x1, y1) +
+                                  " mm crosses cells without material (NaN: lines of a frame "
+                                  "that miss the stock) at " +
+                                  point(x, y) + "; profiles need a height at every sample");
   }
   return p;
 }

@@ -185,7 +185,8 @@ PlaneSums planeSums(const ZMap& map, const CellRegion& region) {
                         0.5 * (g.cellCentreY(region.j0) + g.cellCentreY(region.j1 - 1)));
   return reduceRows(region, empty, [&](int64_t j, PlaneSums& acc) {
     const double y = g.cellCentreY(j);
-    for (int64_t i = region.i0; i < region.i1; ++i) acc.add(g.cellCentreX(i), y, map.at(i, j));
+    for (int64_t i = region.i0; i < region.i1; ++i)
+      if (!std::isnan(map.at(i, j))) acc.add(g.cellCentreX(i), y, map.at(i, j));
   });
 }
 
@@ -195,7 +196,7 @@ HeightMoments residualMoments(const ZMap& map, const CellRegion& region,
   return reduceRows(region, HeightMoments(), [&](int64_t j, HeightMoments& acc) {
     const double y = g.cellCentreY(j);
     for (int64_t i = region.i0; i < region.i1; ++i)
-      acc.add(map.at(i, j) - reference.at(g.cellCentreX(i), y));
+      if (!std::isnan(map.at(i, j))) acc.add(map.at(i, j) - reference.at(g.cellCentreX(i), y));
   });
 }
 

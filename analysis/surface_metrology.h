@@ -97,6 +97,7 @@ struct SurfaceStats {
   double ssk = NAN, sku = NAN;                              // dimensionless
 };
 
+// Both leave out cells without a height (NaN: a frame's lines that miss the stock).
 // Plane sums of the region's cell centres and heights (relative to the region's centre).
 PlaneSums planeSums(const ZMap& map, const CellRegion& region);
 // Moments of the heights minus `reference` over the region.

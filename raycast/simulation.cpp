@@ -11,7 +11,7 @@ namespace scallop {
 SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const SimulationOptions& options) {
   SceneOptions sceneOptions;
   sceneOptions.tileSize = options.tileSize;
-  sceneOptions.stockTop = stock.max.z;
+  sceneOptions.stockTop = options.frame ? stockTopInFrame(stock, *options.frame) : stock.max.z;
   // Candidate regions of options.cast.regionCells cells a side (zmap_caster.cpp), by
   // default about 64 um but 8 to 32 cells: a region's candidates are the moves that may
   // be lowest anywhere in it, so a wide region keeps more of them for every cell, while
@@ -75,8 +75,10 @@ SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3
   phaseDone();
   SimulationResult result;
   result.map = ZMap(grid, stock.max.z);
+  if (options.frame) fillFrameStock(result.map, stock, *options.frame);
   phaseDone();
   result.cast = castZMap(*scene, result.map, options.cast);
+  if (options.frame) result.frameCells = finishFrameMap(result.map, *options.frame);
   result.scene = scene->stats();
   return result;
 }

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
+#include "raycast/grid_frame.h"
 #include "raycast/swept_scene.h"
 #include "raycast/zmap.h"
 #include "raycast/zmap_caster.h"
@@ -16,12 +18,16 @@ struct SimulationOptions {
   double tileSize = 0;  // scene culling tile, mm (SceneOptions::tileSize)
   CastOptions cast;
   CuttingModel cutting;  // envelope (default) or teeth
+  // A map along any direction (raycast/grid_frame.h): the path is given in the frame's
+  // coordinates, the stock (a box of the part) starts each cell at its exit height.
+  std::optional<GridFrame> frame;
 };
 
 struct SimulationResult {
   ZMap map;
   SceneStats scene;
   CastStats cast;
+  FrameCellCounts frameCells;  // with a frame
 };
 
 // The scene options simulate() uses for cells of side `spacing` (mm) under `stock`.
@@ -44,7 +50,9 @@ std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& pat
                                        const Box3& stock, double spacing,
                                        const SimulationOptions& options = {});
 
-// Heights of `stock` (its top is the initial height) after `path`, on `grid`.
+// Heights of `stock` (its top is the initial height) after `path`, on `grid`. With
+// options.frame, the frame's heights (cells start at the stock's exit height, those
+// without material end NaN, those cut below -depth hold -depth).
 SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,
                           const GridSpec& grid, const SimulationOptions& options = {});
 

@@ -35,12 +35,22 @@ ZMap::ZMap(const GridSpec& grid, double initialHeight) : grid_(grid) {
   heights_.assign(n, initialHeight);
 }
 
+// Cells without material (NaN, a frame's lines that miss the stock) are left out:
+// the first of the smallest (largest) of the others, NaN when there is none.
 double ZMap::minHeight() const {
-  return heights_.empty() ? 0.0 : *std::min_element(heights_.begin(), heights_.end());
+  if (heights_.empty()) return 0.0;
+  double best = NAN;
+  for (const double h : heights_)
+    if (h < best || std::isnan(best)) best = h;
+  return best;
 }
 
 double ZMap::maxHeight() const {
-  return heights_.empty() ? 0.0 : *std::max_element(heights_.begin(), heights_.end());
+  if (heights_.empty()) return 0.0;
+  double best = NAN;
+  for (const double h : heights_)
+    if (h > best || std::isnan(best)) best = h;
+  return best;
 }
 
 }  // namespace scallop

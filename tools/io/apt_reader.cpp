@@ -138,7 +138,7 @@ class AptParser {
     Pose pose{{v[0] * scale_, v[1] * scale_, v[2] * scale_},
               havePose_ ? pose_.axis : Vec3{0, 0, 1}};
     if (st.args.size() == 6) {
-      pose.axis = fileAxis({v[3], v[4], v[5]}, where_);
+      pose.axis = fileAxis({v[3], v[4], v[5]}, where_, options_.axesFromAbove);
     }
     if (havePose_ && !from) {
       addMove(pose_, pose, rapidNext_, st.line);

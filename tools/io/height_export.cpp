@@ -36,28 +36,37 @@ void writeHeights16(const ZMap& map, const std::string& path) {
   const GridSpec& g = map.grid();
   if (g.nx <= 0 || g.ny <= 0 || g.nx > INT32_MAX || g.ny > INT32_MAX)
     throw InputError(path, "the height map is empty or too large for an image");
-  const double zMin = map.minHeight(), zMax = map.maxHeight();
+  // A map with cells without material (NaN) keeps the value 0 for them, its heights
+  // from 1 up; without, every value is a height (the files of maps seen from above).
+  const bool hasVoid = std::any_of(map.heights().begin(), map.heights().end(),
+                                   [](double z) { return std::isnan(z); });
+  const double first = hasVoid ? 1 : 0, levels = 65535 - first;
+  const double zMin0 = map.minHeight(), zMax = map.maxHeight();
   // A flat map still gets a positive scale so that offset + scale * v stays valid.
-  const double scale = zMax > zMin ? (zMax - zMin) / 65535.0 : 1e-6;
+  const double scale = zMax > zMin0 ? (zMax - zMin0) / levels : 1e-6;
+  // z = zMin + scale * value: value `first` is the lowest height.
+  const double zMin = zMin0 - first * scale;
   std::vector<uint16_t> pixels(size_t(g.cells()));
   for (int64_t row = 0; row < g.ny; ++row)
     for (int64_t i = 0; i < g.nx; ++i) {
-      const double v = std::round((map.at(i, g.ny - 1 - row) - zMin) / scale);
-      pixels[size_t(row * g.nx + i)] = uint16_t(std::clamp(v, 0.0, 65535.0));
+      const double z = map.at(i, g.ny - 1 - row);
+      const double v = std::clamp(std::round((z - zMin0) / scale) + first, first, 65535.0);
+      pixels[size_t(row * g.nx + i)] = std::isnan(z) ? 0 : uint16_t(v);
     }
   OIIO::ImageSpec spec(int(g.nx), int(g.ny), 1, OIIO::TypeDesc::UINT16);
   spec.channelnames = {"Z"};
-  spec.attribute(
-      "ImageDescription",
-      fmt::format("scallop height map: z_mm = z_offset_mm + z_scale_mm * value; "
-                  "z_offset_mm = {}; z_scale_mm = {}; {} x {} cells of {} mm, "
-                  "first cell centre at ({}, {}) mm; row 0 is the largest y",
-                  zMin, scale, g.nx, g.ny, g.spacing, g.cellCentreX(0), g.cellCentreY(g.ny - 1)));
+  spec.attribute("ImageDescription",
+                 fmt::format("scallop height map: z_mm = z_offset_mm + z_scale_mm * value; "
+                             "z_offset_mm = {}; z_scale_mm = {}; {} x {} cells of {} mm, "
+                             "first cell centre at ({}, {}) mm; row 0 is the largest y{}",
+                             zMin, scale, g.nx, g.ny, g.spacing, g.cellCentreX(0),
+                             g.cellCentreY(g.ny - 1), hasVoid ? "; value 0: no material" : ""));
   spec.attribute("scallop:z_offset_mm", fmt::format("{}", zMin));
   spec.attribute("scallop:z_scale_mm", fmt::format("{}", scale));
   spec.attribute("scallop:origin_x", fmt::format("{}", g.originX));
   spec.attribute("scallop:origin_y", fmt::format("{}", g.originY));
   spec.attribute("scallop:spacing_mm", fmt::format("{}", g.spacing));
+  if (hasVoid) spec.attribute("scallop:no_material_value", "0");
   spec.attribute("Software", std::string("scallop ") + kScallopVersion);
   writeFileAtomically(path, [&](const std::string& temp) {
     auto out = OIIO::ImageOutput::create(format);

@@ -128,15 +128,15 @@ double metresPerUnit(const std::string& path, const std::string& key, const std:
                    fmt::format("header field {} = '{}': expected m, mm, um or nm", key, unit));
 }
 
-// A height map has a height in every cell: NaN (Gwyddion's masked points) or inf is
-// refused rather than let into the statistics.
-InputError nonFiniteHeight(const std::string& path, int64_t row, int64_t column) {
-  return InputError(path, fmt::format("the height at image row {}, column {} is not a finite "
-                                      "number; a height map needs a height in every cell",
+// NaN is a cell without material (a frame's line that misses the stock; Gwyddion's
+// masked points), which the statistics leave out; an infinite height is refused.
+InputError infiniteHeight(const std::string& path, int64_t row, int64_t column) {
+  return InputError(path, fmt::format("the height at image row {}, column {} is infinite; "
+                                      "a cell holds a finite height or NaN (no material)",
                                       row, column));
 }
 
-OIIO::ImageSpec exrSpec(const GridSpec& g) {
+OIIO::ImageSpec exrSpec(const GridSpec& g, const std::string& frame) {
   OIIO::ImageSpec spec(int(g.nx), int(g.ny), 1, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"Z"};
   spec.attribute("compression", "zip");
@@ -144,10 +144,11 @@ OIIO::ImageSpec exrSpec(const GridSpec& g) {
   spec.attribute(kOriginX, OIIO::TypeDesc::DOUBLE, &g.originX);
   spec.attribute(kOriginY, OIIO::TypeDesc::DOUBLE, &g.originY);
   spec.attribute(kSpacing, OIIO::TypeDesc::DOUBLE, &g.spacing);
+  if (!frame.empty()) spec.attribute("scallop:frame", frame);
   return spec;
 }
 
-std::string gsfHeader(const GridSpec& g, const std::string& title) {
+std::string gsfHeader(const GridSpec& g, const std::string& title, const std::string& frame) {
   // Numbers use fmt's shortest representation that reads back to the same double
   // (as exact as "%.17g", without its noise digits: 0.000875, not 0.00087500000000000002).
   std::string header = kGsfMagic;
@@ -158,6 +159,7 @@ std::string gsfHeader(const GridSpec& g, const std::string& title) {
       fmt::format("XOffset = {}\nYOffset = {}\n", g.originX * kMetrePerMm, g.originY * kMetrePerMm);
   header += "XYUnits = m\nZUnits = m\n";
   header += "Title = " + oneLine(title) + "\n";
+  if (!frame.empty()) header += "ScallopFrame = " + oneLine(frame) + "\n";
   // 1 to 4 NULs: at least one terminates the text even when it is already aligned.
   header.append(4 - header.size() % 4, '\0');
   return header;
@@ -174,10 +176,10 @@ void writeGsfRow(const ZMap& map, int64_t row, std::vector<unsigned char>& bytes
 
 }  // namespace
 
-void writeHeightsExr(const ZMap& map, const std::string& path) {
+void writeHeightsExr(const ZMap& map, const std::string& path, const std::string& frame) {
   checkWritable(map, path);
   const GridSpec& g = map.grid();
-  const OIIO::ImageSpec spec = exrSpec(g);
+  const OIIO::ImageSpec spec = exrSpec(g, frame);
 
   writeFileAtomically(path, [&](const std::string& temp) {
     // The format is named explicitly: the temporary name has no ".exr" extension.
@@ -220,16 +222,17 @@ ZMap readHeightsExr(const std::string& path) {
   for (int64_t row = 0; row < g.ny; ++row)
     for (int64_t i = 0; i < g.nx; ++i) {
       const float z = pixels[size_t(row * g.nx + i)];
-      if (!std::isfinite(z)) throw nonFiniteHeight(path, row, i);
+      if (std::isinf(z)) throw infiniteHeight(path, row, i);
       map.at(i, g.ny - 1 - row) = double(z);
     }
   return map;
 }
 
-void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string& title) {
+void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string& title,
+                     const std::string& frame) {
   checkWritable(map, path);
   const GridSpec& g = map.grid();
-  const std::string header = gsfHeader(g, title);
+  const std::string header = gsfHeader(g, title, frame);
 
   writeFileAtomically(path, [&](const std::string& temp) {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
@@ -310,7 +313,7 @@ ZMap readHeightsGsf(const std::string& path) {
   for (int64_t row = 0; row < g.ny; ++row)
     for (int64_t i = 0; i < g.nx; ++i, p += 4) {
       const float z = getFloatLE(p);
-      if (!std::isfinite(z)) throw nonFiniteHeight(path, row, i);
+      if (std::isinf(z)) throw infiniteHeight(path, row, i);
       map.at(i, g.ny - 1 - row) = double(z) * zScale;
     }
   return map;
@@ -333,7 +336,7 @@ struct HeightStreamWriter::Impl {
 
 HeightStreamWriter::HeightStreamWriter(const GridSpec& grid, const std::string& exrPath,
                                        const std::string& gsfPath, const std::string& title,
-                                       int tileHeight)
+                                       int tileHeight, const std::string& frame)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   if (grid.nx <= 0 || grid.ny <= 0 || grid.nx > INT32_MAX || grid.ny > INT32_MAX)
@@ -341,7 +344,7 @@ HeightStreamWriter::HeightStreamWriter(const GridSpec& grid, const std::string& 
         exrPath, fmt::format("a height map of {} x {} cells cannot be an image", grid.nx, grid.ny));
   m.grid = grid;
   m.tileHeight = std::max(1, tileHeight);
-  OIIO::ImageSpec spec = exrSpec(grid);
+  OIIO::ImageSpec spec = exrSpec(grid, frame);
   spec.tile_width = int(std::min<int64_t>(256, grid.nx));
   spec.tile_height = m.tileHeight;
   spec.tile_depth = 1;
@@ -350,7 +353,7 @@ HeightStreamWriter::HeightStreamWriter(const GridSpec& grid, const std::string& 
   if (!m.exr) throw InputError(exrPath, "OpenEXR writer unavailable: " + OIIO::geterror());
   if (!m.exr->open(m.exrFile.open(exrPath), spec)) m.failExr();
   m.gsf.open(m.gsfFile.open(gsfPath), std::ios::binary | std::ios::trunc);
-  const std::string header = gsfHeader(grid, title);
+  const std::string header = gsfHeader(grid, title, frame);
   m.gsf.write(header.data(), std::streamsize(header.size()));
   if (!m.gsf) throw InputError(gsfPath, "cannot write: " + std::string(std::strerror(errno)));
   m.gsfRow.resize(size_t(grid.nx) * 4);

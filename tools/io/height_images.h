@@ -31,8 +31,11 @@
 
 namespace scallop {
 
-void writeHeightsExr(const ZMap& map, const std::string& path);
-void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string& title);
+// `frame` (GridFrame::describe(), empty for a map seen from above) says which frame the
+// heights are in: EXR attribute scallop:frame, GSF header field ScallopFrame.
+void writeHeightsExr(const ZMap& map, const std::string& path, const std::string& frame = "");
+void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string& title,
+                     const std::string& frame = "");
 
 // Streams heights.exr and heights.gsf for a map too large to hold, band by band from
 // the top (image row 0, the largest y) down. The EXR is tiled (tileHeight rows of
@@ -42,7 +45,7 @@ void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string
 class HeightStreamWriter {
  public:
   HeightStreamWriter(const GridSpec& grid, const std::string& exrPath, const std::string& gsfPath,
-                     const std::string& title, int tileHeight);
+                     const std::string& title, int tileHeight, const std::string& frame = "");
   ~HeightStreamWriter();
   HeightStreamWriter(const HeightStreamWriter&) = delete;
   HeightStreamWriter& operator=(const HeightStreamWriter&) = delete;

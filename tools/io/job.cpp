@@ -136,6 +136,29 @@ std::string lineColumn(const std::string& s, size_t byte) {
   return std::to_string(line) + ":" + std::to_string(col);
 }
 
+// "grid.frame": {"origin", "u", "normal", "size": [wu, wv], "depth"} (CONVENTIONS.md
+// "Frames").
+GridFrame parseFrame(const json& f) {
+  rejectUnknownKeys(f, {"origin", "u", "normal", "size", "depth"}, "grid.frame");
+  const Vec3 origin = point(f, "origin", "grid.frame.origin");
+  const Vec3 u = point(f, "u", "grid.frame.u");
+  const Vec3 normal = point(f, "normal", "grid.frame.normal");
+  if (!f.contains("size")) throw InputError("grid.frame.size", "missing; expected [wu, wv] (mm)");
+  const json& size = f.at("size");
+  if (!size.is_array() || size.size() != 2 || !size[0].is_number() || !size[1].is_number())
+    throw InputError("grid.frame.size", "expected [wu, wv], two numbers (mm)");
+  const double wu = size[0].get<double>(), wv = size[1].get<double>();
+  if (!(wu > 0 && wv > 0 && wu <= kMaxMagnitudeMm && wv <= kMaxMagnitudeMm))
+    throw InputError("grid.frame.size",
+                     "must be > 0 and at most 1e6 mm along u and v, got " + size.dump());
+  double depth = HUGE_VAL;  // the whole line
+  if (f.contains("depth")) {
+    depth = number(f, "depth", "grid.frame.depth");
+    if (depth < 0) throw InputError("grid.frame.depth", "must be >= 0 mm");
+  }
+  return makeGridFrame(origin, u, normal, wu, wv, depth, "grid.frame");
+}
+
 }  // namespace
 
 const char* defaultJobJson() {
@@ -156,11 +179,18 @@ PathFileOptions Job::pathOptions() const {
   o.machine = machine;
   o.teeth = cutting.teeth();
   o.flutes = cutter.teeth.flutes;
+  // In a frame the axes are judged in its coordinates, once the path is moved there.
+  o.axesFromAbove = !frame;
   return o;
 }
 
 GridSpec Job::grid() const {
+  if (frame) return frame->grid(spacing);
   return gridCovering(stock.min.x, stock.min.y, stock.max.x, stock.max.y, spacing);
+}
+
+double Job::stockTop() const {
+  return frame ? stockTopInFrame(stock, *frame) : stock.max.z;
 }
 
 void checkPathMagnitudes(const ToolPath& path, const std::vector<int64_t>& lines,
@@ -250,11 +280,14 @@ Job parseJob(const std::string& textIn, const std::string& source,
     job.stock.extend(mx);
 
     const json& grid = requireObject(doc, "grid", "grid");
-    rejectUnknownKeys(grid, {"spacing"}, "grid");
+    rejectUnknownKeys(grid, {"spacing", "frame"}, "grid");
     job.spacing = number(grid, "spacing", "grid.spacing");
     if (job.spacing <= 0) throw InputError("grid.spacing", "must be > 0 mm");
-    const double nx = std::ceil((job.stock.max.x - job.stock.min.x) / job.spacing);
-    const double ny = std::ceil((job.stock.max.y - job.stock.min.y) / job.spacing);
+    if (grid.contains("frame")) job.frame = parseFrame(requireObject(grid, "frame", "grid.frame"));
+    const double nx =
+        std::ceil((job.frame ? job.frame->sizeU : job.stock.max.x - job.stock.min.x) / job.spacing);
+    const double ny =
+        std::ceil((job.frame ? job.frame->sizeV : job.stock.max.y - job.stock.min.y) / job.spacing);
     if (nx * ny > 9e15) throw InputError("grid.spacing", "gives more cells than can be counted");
 
     if (doc.contains("design")) {
@@ -300,6 +333,17 @@ json jobToJson(const Job& job) {
                {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
                 {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}}},
               {"grid", {{"spacing", job.spacing}}}};
+  if (job.frame) {
+    const GridFrame& f = *job.frame;
+    auto vec = [](const Vec3& p) { return json{p.x, p.y, p.z}; };
+    json frame = {{"origin", vec(f.origin)},
+                  {"u", vec(f.u)},
+                  {"normal", vec(f.normal)},
+                  {"v", vec(f.v)},
+                  {"size", {f.sizeU, f.sizeV}}};
+    if (std::isfinite(f.depth)) frame["depth"] = f.depth;
+    out["grid"]["frame"] = frame;
+  }
   if (job.isRaster) {
     const RasterSpec& r = job.raster;
     out["path"] = {{"raster",

@@ -12,12 +12,13 @@
 #include <vector>
 
 #include "analysis/triangle_mesh.h"
+#include "base/vec3.h"
+#include "raycast/grid_frame.h"
 #include "raycast/zmap.h"
 #include "sweep/cutter.h"
 #include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/raster.h"
-#include "base/vec3.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
@@ -43,6 +44,9 @@ struct Job {
   std::optional<MachineSpec> machine;
   Box3 stock;
   double spacing = 0;  // grid cell side, mm
+  // "grid": {"frame": {...}}: a map along any direction (CONVENTIONS.md "Frames"). Once
+  // loaded (tools/run/job_loader.h), `path` is in the frame's coordinates.
+  std::optional<GridFrame> frame;
   bool isRaster = false;
   RasterSpec raster;     // when isRaster
   std::string pathFile;  // when not: the tool-path file, resolved to a path
@@ -60,6 +64,9 @@ struct Job {
   double gougeTolerance = 1e-3;                // mm below the design that is a gouge
 
   GridSpec grid() const;
+  // The stock's highest point on the map's lines: stock.max.z, or in a frame the box's
+  // highest w (mm).
+  double stockTop() const;
   // How the path file is read: block delete, work offsets, tools, machine, and for the
   // teeth model the one tool's flute count (G-code feeds per tooth).
   PathFileOptions pathOptions() const;

@@ -61,13 +61,13 @@ bool parseDecimal(const std::string& token, double& value) {
   return std::isfinite(value);  // overflow to inf is not a coordinate
 }
 
-Vec3 fileAxis(const Vec3& axis, const std::string& where) {
+Vec3 fileAxis(const Vec3& axis, const std::string& where, bool fromAbove) {
   const double len = length(axis);
   if (!(len >= 1e-9) || !std::isfinite(len))
     throw InputError(where, "the tool axis (i j k) must be a non-zero vector");
   // A z-map holds the lowest point of the cut seen from above; a cutter whose shank
   // points downwards cuts from below, which no height map can show.
-  if (axis.z < 0)
+  if (fromAbove && axis.z < 0)
     throw InputError(where, "the tool axis (i j k) points below the horizontal (k = " +
                                 std::to_string(axis.z / len) +
                                 "): a height map seen from above cannot show what it cuts; "
@@ -75,7 +75,8 @@ Vec3 fileAxis(const Vec3& axis, const std::string& where) {
   return std::fabs(len - 1) <= 1e-12 ? axis : axis / len;
 }
 
-void readClText(std::istream& in, const std::string& source, ToolPathFile& out) {
+void readClText(std::istream& in, const std::string& source, ToolPathFile& out,
+                bool axesFromAbove) {
   out.format = "cl-text";
   std::string line;
   int64_t lineNo = 0, previousLine = 0;
@@ -106,7 +107,7 @@ void readClText(std::istream& in, const std::string& source, ToolPathFile& out) 
                        "expected 3 numbers (x y z) or 6 (x y z i j k), got " + std::to_string(n));
     Pose pose{{v[0], v[1], v[2]}, {0, 0, 1}};
     if (n == 6) {
-      pose.axis = fileAxis({v[3], v[4], v[5]}, where);
+      pose.axis = fileAxis({v[3], v[4], v[5]}, where, axesFromAbove);
     }
     if (havePrevious) out.addMove(previous, pose, passBreak, lineNo);
     previous = pose;
@@ -224,7 +225,7 @@ ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& op
   const std::string ext = lowerExtension(path);
   ToolPathFile file;
   if (ext == ".txt" || (ext == ".cl" && looksLikeClText(in))) {
-    readClText(in, path, file);
+    readClText(in, path, file, options.axesFromAbove);
   } else if (ext == ".cl" || ext == ".apt" || ext == ".cls") {
     readApt(in, path, options, file);
   } else if (ext == ".nc" || ext == ".ngc" || ext == ".gcode" || ext == ".tap") {

@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
+#include "base/vec3.h"
 #include "sweep/cutter.h"
 #include "sweep/pose.h"
-#include "base/vec3.h"
 
 namespace scallop {
 
@@ -80,6 +80,9 @@ struct PathFileOptions {
   // The flute count of the job's one "tool" (with "tools", each cutter's own), for the
   // G-code feed per tooth F / (S flutes).
   int flutes = 2;
+  // A tool axis below the horizontal (k < 0) is refused as it is read; off when the job
+  // has a frame, whose loader judges the axes in the frame (job_loader.h).
+  bool axesFromAbove = true;
 };
 
 struct ToolPathFile {
@@ -104,7 +107,8 @@ struct ToolPathFile {
 ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& options = {});
 
 // The plain CL text reader on a stream or a string (`source` names it in messages).
-void readClText(std::istream& in, const std::string& source, ToolPathFile& out);
+void readClText(std::istream& in, const std::string& source, ToolPathFile& out,
+                bool axesFromAbove = true);
 ToolPath parseToolPath(const std::string& text, const std::string& source);
 
 // Adds a warning for every rapid move whose cutter goes below the stock top inside
@@ -121,8 +125,9 @@ void warnRapidsIntoStock(ToolPathFile& file, const Cutter& cutter, const Box3& s
 // A tool axis read from a file: a vector already unit to round-off (as CAM systems
 // print them, 17 digits round-trip) is kept bit for bit, so the sweep's own
 // normalisation treats it exactly like a generated axis; others are normalised.
-// Throws InputError(where) for a zero or non-finite axis.
-Vec3 fileAxis(const Vec3& axis, const std::string& where);
+// Throws InputError(where) for a zero or non-finite axis, and with `fromAbove` for one
+// below the horizontal.
+Vec3 fileAxis(const Vec3& axis, const std::string& where, bool fromAbove = true);
 
 // Parses a number the way every reader does: decimal only (no hex, inf or nan),
 // the whole token consumed. Returns false otherwise.

@@ -1,5 +1,6 @@
 #include "tools/run/job_loader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -63,16 +64,18 @@ void readPathFile(Job& job) {
   job.pathFormat = read.format;
 }
 
+// Where move k came from: "file:line", or "path move k" for a raster.
+std::string moveLine(const Job& job, size_t k) {
+  return k < job.moveLines.size() ? job.pathFile + ":" + std::to_string(job.moveLines[k])
+                                  : "path move " + std::to_string(k + 1);
+}
+
 // The teeth model needs a feed per tooth for every cutting move (its own, from G-code F
 // and S, or the job's) and a straight tip (not a TCP-off turning move): refused here,
 // naming the job's field or the file's line, before anything is swept.
 void checkTeethInputs(const Job& job) {
   if (!job.cutting.teeth()) return;
   const ToolPath& path = job.path;
-  auto line = [&](size_t k) {
-    return k < job.moveLines.size() ? job.pathFile + ":" + std::to_string(job.moveLines[k])
-                                    : "path move " + std::to_string(k + 1);
-  };
   for (size_t k = 0; k < path.moves.size(); ++k) {
     const Move& m = path.moves[k];
     if (m.rapid) continue;
@@ -82,14 +85,53 @@ void checkTeethInputs(const Job& job) {
           job.isRaster
               ? "missing; the teeth model needs a feed per tooth (mm, > 0) for the raster"
               : "missing; the teeth model needs a feed per tooth (mm, > 0): the move of " +
-                    line(k) +
+                    moveLine(job, k) +
                     " carries none (G-code gives F / (S flutes) in G94 with S, F / flutes in "
                     "G95; G93 and other formats give none)");
     if (m.rotary > 0 && m.rotary <= path.rotary.size() && !path.rotary[m.rotary - 1].tcp)
-      throw InputError(line(k),
+      throw InputError(moveLine(job, k),
                        "the teeth cutting model needs a straight tip motion; a move that turns "
                        "the rotary axes with TCP off (its tip follows a curve) is not supported "
                        "with teeth");
+  }
+}
+
+// With a frame: what a frame cannot hold refused, and the path moved into the frame's
+// coordinates (raycast/grid_frame.h). Moves that stay below -depth cannot reach the map
+// and become rapids (not swept); every other cutting move must point its axis to the
+// normal side (k >= 0 in the frame), as k >= 0 is required without a frame.
+void placePathInFrame(Job& job) {
+  const GridFrame& frame = *job.frame;
+  if (!job.path.rotary.empty())
+    throw InputError("grid.frame",
+                     "a 5-axis machine's rotary moves (\"machine\") are not supported in a frame; "
+                     "write the path as CL data (tip and axis) or leave out grid.frame");
+  if (job.cutting.teeth())
+    throw InputError("grid.frame",
+                     "the teeth cutting model is not supported in a frame; use cutting.model "
+                     "\"envelope\" or leave out grid.frame");
+  if (!job.designFile.empty())
+    throw InputError("grid.frame",
+                     "the design comparison is vertical and needs the map without a frame; "
+                     "leave out grid.frame or design");
+  job.path = pathInFrame(job.path, frame);
+  for (size_t k = 0; k < job.path.moves.size(); ++k) {
+    Move& m = job.path.moves[k];
+    if (m.rapid) continue;
+    const Cutter& c = job.path.cutters.empty() ? job.cutter : job.path.cutters[m.tool];
+    // No point of the cutter is further than R + flute length from its tip.
+    if (std::fmax(m.from.tip.z, m.to.tip.z) + c.radius + c.fluteLength < -frame.depth) {
+      m.rapid = true;
+      continue;
+    }
+    const double k0 = std::fmin(m.from.axis.z, m.to.axis.z);
+    if (k0 < 0)
+      throw InputError(
+          moveLine(job, k),
+          "the tool axis points away from grid.frame.normal (k = " + std::to_string(k0) +
+              " in the frame): a height map along the normal cannot show "
+              "what it cuts; scallop needs k >= 0 in the frame, or a "
+              "grid.frame.depth that leaves the move below the map");
   }
 }
 
@@ -107,6 +149,7 @@ void loadJobInputs(Job& job, bool checkMemory) {
       readPathFile(job);
     }
     checkTeethInputs(job);
+    if (job.frame) placePathInFrame(job);
   } catch (const InputError& e) {
     throwFromJob(e, job.source);
   }

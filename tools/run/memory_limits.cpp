@@ -58,8 +58,8 @@ RunMemory estimateRunMemory(const Job& job, const GridSpec& grid, bool exact,
   RunMemory memory;
   memory.mapBytes = mapBytes(grid);
   if (exact)
-    memory.sceneBytes = estimateSceneBytes(job.cutter, job.path, job.stock.max.z,
-                                           &memory.cuttingMoves, job.cutting);
+    memory.sceneBytes =
+        estimateSceneBytes(job.cutter, job.path, job.stockTop(), &memory.cuttingMoves, job.cutting);
   memory.availableBytes = availableBytes;
   return memory;
 }

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <filesystem>
 
+#include "base/version.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
-#include "base/version.h"
 
 namespace scallop {
 
@@ -62,6 +62,7 @@ json simulationReport(const RunRecord& run) {
                {"exact_evaluations_per_cell", cells > 0 ? run.exactEvaluations / cells : 0.0},
                {"mcells_per_s", run.castSeconds > 0 ? cells / run.castSeconds / 1e6 : 0.0}};
   if (!run.raster.is_null()) meas.update(run.raster);
+  if (!run.frameCells.is_null()) meas["frame"] = run.frameCells;
   r["measurements"] = meas;
   r["surface_stats"] = run.surfaceStats;
   r["outputs"] = {"heights.exr", "heights.gsf", "preview.png", "report.json"};
@@ -70,6 +71,10 @@ json simulationReport(const RunRecord& run) {
   if (!run.pathFile.is_null()) r["path_file"] = run.pathFile;
   if (!run.design.is_null()) r["design"] = run.design, r["outputs"].push_back("deviation.png");
   return r;
+}
+
+json frameCellsJson(const FrameCellCounts& counts) {
+  return {{"void_cells", counts.voidCells}, {"cut_through_cells", counts.cutThroughCells}};
 }
 
 json gridToJson(const GridSpec& g) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "analysis/surface_metrology.h"
+#include "raycast/grid_frame.h"
 #include "raycast/zmap.h"
 
 namespace scallop {
@@ -43,10 +44,11 @@ struct RunRecord {
   nlohmann::json raster;        // rasterMeasurements() for a raster job, else null
   nlohmann::json surfaceStats;  // surfaceStatsJson()
   // Optional sections, left out when null.
-  nlohmann::json pathFile;   // pathFileReport() for a job with a path file
-  nlohmann::json design;     // designReport(), which also wrote deviation.png
-  nlohmann::json tiled;      // {"bands", "band_rows", "exr_tile_rows"} of a banded run
-  nlohmann::json feedMarks;  // the teeth model's, tools/run/feed_mark_report.h
+  nlohmann::json pathFile;    // pathFileReport() for a job with a path file
+  nlohmann::json design;      // designReport(), which also wrote deviation.png
+  nlohmann::json tiled;       // {"bands", "band_rows", "exr_tile_rows"} of a banded run
+  nlohmann::json feedMarks;   // the teeth model's, tools/run/feed_mark_report.h
+  nlohmann::json frameCells;  // frameCellsJson() for a map in a frame
 };
 
 nlohmann::json simulationReport(const RunRecord& run);
@@ -54,6 +56,9 @@ nlohmann::json simulationReport(const RunRecord& run);
 // The grid block: {"origin", "spacing", "nx", "ny", "cell_centre", "units"}.
 nlohmann::json gridToJson(const GridSpec& g);
 GridSpec gridFromJson(const nlohmann::json& j);
+
+// A frame's cell counts: {"void_cells", "cut_through_cells"} (CONVENTIONS.md "Frames").
+nlohmann::json frameCellsJson(const FrameCellCounts& counts);
 
 // For a raster: floor_z and the largest scallop between the first and the last pass
 // on `map`; a band of a map gives its own share.

@@ -43,6 +43,7 @@ InMemoryHeights computeHeights(const Job& job, const SimulationPlan& plan,
   SimulationOptions options;
   options.cast.progress = settings.progress;
   options.cutting = job.cutting;
+  options.frame = job.frame;
   if (settings.method == "stamp") {
     // The classical z-map baseline (raycast/stamp_caster.h), reported in the same slots.
     StampOptions stamp;
@@ -81,7 +82,9 @@ RunRecord inMemoryRecord(const Job& job, const SimulationPlan& plan, const RunSe
   run.minHeight = sim.map.minHeight();
   run.maxHeight = sim.map.maxHeight();
   run.exactEvaluations = double(sim.cast.exactEvaluations);
-  if (job.isRaster) run.raster = rasterMeasurements(job, sim.map);
+  // The raster's floor and scallops are measured vertically in the part frame.
+  if (job.isRaster && !job.frame) run.raster = rasterMeasurements(job, sim.map);
+  if (job.frame) run.frameCells = frameCellsJson(sim.frameCells);
   run.surfaceStats = mapSurfaceStatsJson(sim.map);
   run.pathFile = h.pathFile;
   run.feedMarks = feedMarksReport(job, sim.map);
@@ -99,11 +102,12 @@ json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& 
   const auto tWrite = Clock::now();
   const fs::path dir(settings.outDir);
   const std::string title = simulationTitle(job);
-  writeHeightsExr(map, (dir / "heights.exr").string());
-  writeHeightsGsf(map, (dir / "heights.gsf").string(), title);
+  const std::string frame = job.frame ? job.frame->describe() : "";
+  writeHeightsExr(map, (dir / "heights.exr").string(), frame);
+  writeHeightsGsf(map, (dir / "heights.gsf").string(), title, frame);
   PreviewOptions preview;
   preview.title = previewTitle(title);
-  preview.uncutHeight = job.stock.max.z;  // the map's initial height (raycast/simulation.h)
+  preview.uncutHeight = job.stockTop();  // the map's initial height (raycast/simulation.h)
   writePreviewPng(map, (dir / "preview.png").string(), preview);
 
   RunRecord run = inMemoryRecord(job, plan, settings, h);
@@ -123,6 +127,9 @@ void checkRunnable(const Job& job, bool exact, bool banded) {
                      "stamp: the stamping baseline stamps the solid of revolution "
                      "and has no cutting edges; the job's cutting.model \"teeth\" "
                      "needs --method exact");
+  if (job.frame && !exact)
+    throw InputError("--method",
+                     "stamp: the stamping baseline has no frames; grid.frame needs --method exact");
   if (job.design && (!exact || banded))
     throw InputError(job.source + ": design",
                      "the design comparison needs --method exact and the whole map in memory "

@@ -95,6 +95,7 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
   int64_t doneCells = 0;
   SimulationOptions options;
   options.cutting = job.cutting;
+  options.frame = job.frame;
   options.cast.progress = [&](int64_t done, int64_t) {
     if (settings.progress) settings.progress(doneCells + done, totalCells);
   };
@@ -120,6 +121,7 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
            {"culling_tiles", sceneStats.tiles}};
     if (!job.isRaster) run["path_file_md5"] = fileMd5(job.pathFile);
     if (job.cutting.teeth()) run["feed_marks_plan"] = feedMarkPlan(job, grid);
+    if (job.frame) run["frame"] = job.frame->describe(), run["uncut_height"] = job.stockTop();
   } else {
     TiledRun whole;
     whole.record.jobSource = job.source;
@@ -133,7 +135,8 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
                           {"exr_tile_rows", layout.tileHeight}};
     whole.title = simulationTitle(job);
     whole.exrTileRows = layout.tileHeight;
-    whole.uncutHeight = job.stock.max.z;
+    whole.uncutHeight = job.stockTop();
+    if (job.frame) whole.frame = job.frame->describe();
     if (job.cutting.teeth()) whole.feedMarksPlan = feedMarkPlan(job, grid);
     output = std::make_unique<TiledOutput>(whole, settings.outDir);
     if (!job.isRaster) output->setPathFile(pathFileReport(job, settings.quiet));
@@ -143,7 +146,10 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
   const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   for (int64_t b = first; b < end; ++b) {
     ZMap band(layout.bandGrid(b, grid), job.stock.max.z);
+    if (job.frame) fillFrameStock(band, job.stock, *job.frame);
     const CastStats cast = castZMap(*scene, band, options.cast);
+    FrameCellCounts frameCells;
+    if (job.frame) frameCells = finishFrameMap(band, *job.frame);
     doneCells += band.grid().cells();
     json stats = {{"rows", {layout.firstRow(b), layout.endRow(b, grid)}},
                   {"cells", cast.cells},
@@ -153,7 +159,8 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
                   {"min_height", band.minHeight()},
                   {"max_height", band.maxHeight()},
                   {"threads", threads}};
-    if (job.isRaster) stats["raster"] = rasterMeasurements(job, band);
+    if (job.isRaster && !job.frame) stats["raster"] = rasterMeasurements(job, band);
+    if (job.frame) stats["frame"] = frameCellsJson(frameCells);
     if (output) {
       output->add(band, stats);
     } else {
@@ -190,6 +197,8 @@ TiledRun tiledRunFromBands(const json& run) {
   out.exrTileRows = run.at("exr_tile_rows").get<int>();
   out.uncutHeight = out.record.inputs.at("stock").at("max").at(2).get<double>();
   if (run.contains("feed_marks_plan")) out.feedMarksPlan = run.at("feed_marks_plan");
+  if (run.contains("frame")) out.frame = run.at("frame").get<std::string>();
+  if (run.contains("uncut_height")) out.uncutHeight = run.at("uncut_height").get<double>();
   return out;
 }
 
@@ -198,7 +207,7 @@ TiledOutput::TiledOutput(const TiledRun& run, const std::string& dir)
       dir_(dir),
       grid_(run.record.grid),
       writer_(grid_, (fs::path(dir) / "heights.exr").string(),
-              (fs::path(dir) / "heights.gsf").string(), run.title, run.exrTileRows) {
+              (fs::path(dir) / "heights.gsf").string(), run.title, run.exrTileRows, run.frame) {
   // The same reduction as writePreviewPng's for the whole map: blocks of k x k cells
   // aligned at cell (0, 0), each keeping its minimum.
   const int64_t longSide = std::max(grid_.nx, grid_.ny);
@@ -225,8 +234,17 @@ void TiledOutput::add(const ZMap& band, const json& stats) {
     }
   moments_.add(residualMoments(band, wholeMap(band.grid()), LevelPlane()));
   writeSeconds_ += secondsSince(t0);
-  zMin_ = std::min(zMin_, stats.at("min_height").get<double>());
-  zMax_ = std::max(zMax_, stats.at("max_height").get<double>());
+  // A band of a frame's map may hold no height at all (NaN min and max: JSON null).
+  if (stats.at("min_height").is_number()) {
+    zMin_ = std::min(zMin_, stats.at("min_height").get<double>());
+    zMax_ = std::max(zMax_, stats.at("max_height").get<double>());
+  }
+  if (stats.contains("frame")) {
+    const json& f = stats["frame"];
+    frameCells_.voidCells += f.at("void_cells").get<int64_t>();
+    frameCells_.cutThroughCells += f.at("cut_through_cells").get<int64_t>();
+    hasFrame_ = true;
+  }
   castSeconds_ += stats.at("cast_seconds").get<double>();
   evaluations_ += stats.at("exact_evaluations").get<double>();
   if (stats.contains("raster")) {
@@ -262,6 +280,7 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   record.maxHeight = zMax_;
   record.exactEvaluations = evaluations_;
   record.raster = raster_;
+  if (hasFrame_) record.frameCells = frameCellsJson(frameCells_);
   // Bands cannot be read twice: unlevelled (heights from the mean), and without Sa,
   // which needs the mean before the pass (analysis/surface_metrology.h).
   SurfaceStats surface =

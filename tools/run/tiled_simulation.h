@@ -50,6 +50,7 @@ struct TiledRun {
   int exrTileRows = 0;           // BandLayout::tileHeight
   double uncutHeight = 0;        // the stock's top, mm: the preview's uncut grey
   nlohmann::json feedMarksPlan;  // a teeth run's feedMarkPlan, else null
+  std::string frame;             // GridFrame::describe() of a map in a frame, else empty
 };
 
 // The TiledRun of a band file's "run" description (merge).
@@ -76,6 +77,8 @@ class TiledOutput {
   double zMin_ = HUGE_VAL, zMax_ = -HUGE_VAL, castSeconds_ = 0, writeSeconds_ = 0;
   double evaluations_ = 0;
   nlohmann::json raster_, pathFile_;
+  FrameCellCounts frameCells_;  // a frame's void and cut-through cells, summed
+  bool hasFrame_ = false;
   HeightMoments moments_;  // raw heights of the bands so far, merged in band order
   std::unique_ptr<FeedMarkSampler> feedMarks_;  // a teeth run's (feed_mark_report.h)
 };

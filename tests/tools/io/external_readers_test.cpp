@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/cli_harness.h"
 #include "raycast/zmap.h"
+#include "tests/support/cli_harness.h"
 #include "tests/support/sampled_field.h"
 #include "tools/io/height_images.h"
 #include "tools/io/x3p_writer.h"
@@ -186,7 +186,10 @@ TEST_F(ExternalReaders, GwyddionReadsTheGsfAsWritten) {
   if (!installed("gwyddion")) GTEST_SKIP() << "gwyddion is not installed (scripts/install-deps.sh)";
   const ZMap map = knownMap();
   const GridSpec& g = map.grid();
-  const GwyField f = writtenAndRead(map, "h.gsf", writeHeightsGsf);
+  const GwyField f = writtenAndRead(
+      map, "h.gsf", [](const ZMap& m, const std::string& p, const std::string& title) {
+        writeHeightsGsf(m, p, title);
+      });
   EXPECT_NEAR(f.xoff, g.originX * 1e-3, 1e-18);
   EXPECT_NEAR(f.yoff, g.originY * 1e-3, 1e-18);
   EXPECT_EQ(f.unitXy, "m");
