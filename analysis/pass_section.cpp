@@ -21,7 +21,9 @@ constexpr int kMaxBisections = 200;
 
 PassSection::PassSection(SupportMap support, double centreY, double toleranceMm)
     : support_(std::move(support)), centreY_(centreY), tolerance_(toleranceMm) {
-  floorZ_ = support_(Vec3{0, 0, -1}).z;
+  const Vec3 lowest = support_(Vec3{0, 0, -1});
+  floorZ_ = lowest.z;
+  floorY_ = lowest.y;
   top_ = support_(Vec3{0, 0, 1}).z;
   reachPlus_ = support_(Vec3{0, 1, 0}).y;
   reachMinus_ = -support_(Vec3{0, -1, 0}).y;
@@ -91,24 +93,48 @@ bool PassSection::stepOver(double h, Enclosure* width) const {
 }
 
 bool PassSection::scallop(double stepOverMm, double* scallopMm, std::string* reason) const {
-  const double full = reachPlus_ + reachMinus_;
-  if (!(stepOverMm > 0) || !(stepOverMm < full)) {
-    *reason = "the step-over must lie in (0, " + std::to_string(full) +
-              ") mm, the width of one pass's shadow; wider passes leave an uncut strip";
+  if (!(stepOverMm > 0) || !std::isfinite(stepOverMm)) {
+    *reason = "the step-over must be a number > 0 mm";
     return false;
   }
-  // The smallest h with W(h) >= w; W is nondecreasing (an unreachable side counts
-  // with its flank's offset, the largest it can have).
+  return coverScallop({{0, false}, {stepOverMm, false}}, floorY_, stepOverMm + floorY_, scallopMm,
+                      reason);
+}
+
+bool PassSection::coverScallop(const std::vector<PassPlacement>& passes, double fromMm, double toMm,
+                               double* scallopMm, std::string* reason) const {
+  // Whether the passes' intervals at height h cover [from, to]; `reachable` false if
+  // a side is only bounded by its flank there.
+  std::vector<std::pair<double, double>> intervals(passes.size());
+  auto covers = [&](double h, bool* reachable) {
+    const SectionSide plus = side(h, +1), minus = side(h, -1);
+    *reachable = plus.reachable && minus.reachable;
+    for (size_t k = 0; k < passes.size(); ++k) {
+      const double c = passes[k].crossMm;
+      const bool m = passes[k].mirrored;
+      intervals[k] = {c - (m ? plus : minus).offset.mid(), c + (m ? minus : plus).offset.mid()};
+    }
+    std::sort(intervals.begin(), intervals.end());
+    double reach = fromMm;
+    for (const auto& [lo, hi] : intervals) {
+      if (lo > reach) break;
+      reach = std::max(reach, hi);
+    }
+    return reach >= toMm;
+  };
+  bool reachable = false;
   double lo = 0, hi = heightMm();
+  if (!covers(hi, &reachable)) {
+    *reason = "the passes leave an uncut strip: their shadows do not meet";
+    return false;
+  }
   for (int iter = 0; iter < kMaxBisections && hi - lo > tolerance_; ++iter) {
     const double mid = 0.5 * (lo + hi);
     if (!(mid > lo && mid < hi)) break;
-    Enclosure width;
-    stepOver(mid, &width);
-    (width.mid() >= stepOverMm ? hi : lo) = mid;
+    (covers(mid, &reachable) ? hi : lo) = mid;
   }
-  Enclosure width;
-  if (!stepOver(hi, &width)) {
+  covers(hi, &reachable);
+  if (!reachable) {
     *reason =
         "the passes meet on the vertical flank of the cutter's shadow: the cusp is a "
         "wall, not a scallop";

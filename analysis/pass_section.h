@@ -44,6 +44,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "analysis/path_interval.h"
 #include "base/vec3.h"
@@ -65,6 +66,14 @@ struct Enclosure {
 struct SectionSide {
   bool reachable = false;  // false: the shadow's flank starts below h (see the header)
   Enclosure offset;        // y+ (or y- on the -y side) from the tip's y, outwards, mm
+};
+
+// A pass of a set of parallel passes, in a cross coordinate across them: its tip's
+// position, and whether the section's +y side points towards decreasing cross
+// coordinates (a pass fed the other way, or a cross axis along -y).
+struct PassPlacement {
+  double crossMm = 0;
+  bool mirrored = false;
 };
 
 class PassSection {
@@ -96,11 +105,19 @@ class PassSection {
   // false (with `reason`) if the passes leave an uncut strip or meet only on a
   // vertical flank.
   bool scallop(double stepOverMm, double* scallopMm, std::string* reason) const;
+  // The same for any set of parallel passes (a raster, a zigzag's mirrored passes):
+  // the largest scallop over the cross coordinates [fromMm, toMm], the least h at which
+  // the intervals where each pass leaves at most h, [c - y-(h), c + y+(h)] (mirrored:
+  // [c - y+(h), c + y-(h)]), cover it. Monotone in h, so bisection on h.
+  bool coverScallop(const std::vector<PassPlacement>& passes, double fromMm, double toMm,
+                    double* scallopMm, std::string* reason) const;
+  // The floor contact's offset from the tip along +y, mm.
+  double floorY() const { return floorY_; }
 
  private:
   SupportMap support_;
   double centreY_, tolerance_;
-  double floorZ_ = 0, top_ = 0, reachPlus_ = 0, reachMinus_ = 0;
+  double floorZ_ = 0, floorY_ = 0, top_ = 0, reachPlus_ = 0, reachMinus_ = 0;
 };
 
 // The procedure "exact" of `scallop interval` for any cutter, lead and tilt: L/2 =
