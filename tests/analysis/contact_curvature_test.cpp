@@ -9,13 +9,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include "analysis/pass_section.h"
 #include "base/constants.h"
+#include "sweep/cutter_profile.h"
 #include "sweep/raster.h"
 
 namespace scallop {
 namespace {
+
+struct Posture {
+  double leadDeg, tiltDeg;
+};
 
 TEST(ContactCurvature, BallIsItsRadiusInAnyPosture) {
   for (double lead : {0.0, 10.0, -30.0})
@@ -133,6 +140,41 @@ TEST(ContactCurvature, BarrelFormArcAgainstTheExactSection) {
         "exact %.9f mm\n",
         c.lead, c.tilt, c.h, rEff, approx.value, 0.5 * width.mid());
     EXPECT_NEAR(approx.value, 0.5 * width.mid(), c.boundMm);
+  }
+}
+
+// The same barrel as a cutter of the general kernel (sweep/cutter_profile.h): its
+// contact arc found on the profile and its exact section by its own support map agree
+// with the test's own barrel above.
+Cutter barrelCutter() {
+  const double span = kFormSpanDeg * kPi / 180;
+  const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
+  const double p1S = kFormCentreS - kFormRadius * std::sin(span);
+  std::vector<ProfileSegment> chain(3);
+  chain[0] = {0, 0, p1Rho, p1S, 0};
+  chain[1] = {p1Rho, p1S, 5, 15, kFormRadius};
+  chain[2] = {5, 15, 5, 30, 0};
+  Cutter c;
+  c.type = CutterType::Profile;
+  c.profile = std::make_shared<const CutterProfile>(CutterProfile::make(chain, "test.profile"));
+  c.radius = c.profile->maxRadius();
+  c.fluteLength = c.profile->fluteLength();
+  return c;
+}
+
+TEST(ContactCurvature, BarrelCutterOfTheGeneralKernelAgrees) {
+  const Cutter barrel = barrelCutter();
+  for (const Posture& p : {Posture{0, 88.5}, Posture{20, 88}, Posture{88.5, 0}}) {
+    const Vec3 a = leadTiltAxis(Vec3{1, 0, 0}, p.leadDeg, p.tiltDeg);
+    const ProcedureResult rEff = effectiveRadiusAtContact(barrel, p.leadDeg, p.tiltDeg);
+    ASSERT_TRUE(rEff.applicable) << rEff.reason;
+    EXPECT_NEAR(rEff.value, barrelEffectiveRadius(a), 1e-9 * rEff.value);
+    const PassSection own([a](const Vec3& d) { return barrelSupport(a, d); }, 0);
+    Enclosure width;
+    ASSERT_TRUE(own.stepOver(0.005, &width));
+    const ProcedureResult exact = halfIntervalExact(barrel, p.leadDeg, p.tiltDeg, 0.005);
+    ASSERT_TRUE(exact.applicable) << exact.reason;
+    EXPECT_NEAR(exact.value, 0.5 * width.mid(), 1e-9);
   }
 }
 
