@@ -249,33 +249,6 @@ ProcedureResult computational(double rb, double rcr, double rho, double h, doubl
   return ok(y[iMax]);  // line 26
 }
 
-// Eq. (8): L/2 = sqrt(2 R_eff h - h^2), shared by sekine and redonnet.
-ProcedureResult circularHalfInterval(const char* name, const ProcedureResult& reff, double h,
-                                     double radius) {
-  if (!reff.applicable) return reff;
-  if (auto why = checkLength("scallop height h", h); !why.empty())
-    return notApplicable(std::string(name) + ": " + why);
-  if (h > reff.value)
-    return notApplicable(std::string(name) + ": h = " + num(h) + " mm exceeds R_eff = " +
-                         num(reff.value) + " mm, beyond the circle of Eq. (8)");
-  double halfInterval = std::sqrt(2 * reff.value * h - h * h);
-  if (auto why = checkWithinRadius(halfInterval, radius); !why.empty())
-    return notApplicable(std::string(name) + ": " + why);
-  return ok(halfInterval);
-}
-
-// Eq. (12): h = R_eff - sqrt(R_eff^2 - L^2/4), shared by sekine and redonnet.
-ProcedureResult circularScallopHeight(const char* name, const ProcedureResult& reff,
-                                      double halfInterval, double radius) {
-  if (!reff.applicable) return reff;
-  std::string why = checkLength("half interval L/2", halfInterval);
-  if (why.empty()) why = checkWithinRadius(halfInterval, radius);
-  if (why.empty() && halfInterval > reff.value)
-    why = "L/2 = " + num(halfInterval) + " mm exceeds R_eff = " + num(reff.value) + " mm (Eq. 12)";
-  if (!why.empty()) return notApplicable(std::string(name) + ": " + why);
-  return ok(reff.value - std::sqrt(reff.value * reff.value - halfInterval * halfInterval));
-}
-
 // The first non-empty reason, prefixed with the procedure's name; empty if none.
 std::string firstReason(const char* name, std::initializer_list<std::string> reasons) {
   for (const std::string& r : reasons)
@@ -292,6 +265,35 @@ ProcedureResult checkedComputational(double rb, double rcr, double leadDeg, doub
 }
 
 }  // namespace
+
+// Eq. (8): L/2 = sqrt(2 R_eff h - h^2), shared by sekine, redonnet and
+// the effective radius at the contact (analysis/contact_curvature.h).
+ProcedureResult circularHalfInterval(const char* name, const ProcedureResult& reff, double h,
+                                     double radius) {
+  if (!reff.applicable) return reff;
+  if (auto why = checkLength("scallop height h", h); !why.empty())
+    return notApplicable(std::string(name) + ": " + why);
+  if (h > reff.value)
+    return notApplicable(std::string(name) + ": h = " + num(h) + " mm exceeds R_eff = " +
+                         num(reff.value) + " mm, beyond the circle of Eq. (8)");
+  double halfInterval = std::sqrt(2 * reff.value * h - h * h);
+  if (auto why = checkWithinRadius(halfInterval, radius); !why.empty())
+    return notApplicable(std::string(name) + ": " + why);
+  return ok(halfInterval);
+}
+
+// Eq. (12): h = R_eff - sqrt(R_eff^2 - L^2/4), shared by sekine, redonnet and
+// the effective radius at the contact (analysis/contact_curvature.h).
+ProcedureResult circularScallopHeight(const char* name, const ProcedureResult& reff,
+                                      double halfInterval, double radius) {
+  if (!reff.applicable) return reff;
+  std::string why = checkLength("half interval L/2", halfInterval);
+  if (why.empty()) why = checkWithinRadius(halfInterval, radius);
+  if (why.empty() && halfInterval > reff.value)
+    why = "L/2 = " + num(halfInterval) + " mm exceeds R_eff = " + num(reff.value) + " mm (Eq. 12)";
+  if (!why.empty()) return notApplicable(std::string(name) + ": " + why);
+  return ok(reff.value - std::sqrt(reff.value * reff.value - halfInterval * halfInterval));
+}
 
 // ---- Radii of the 2D procedures ---------------------------------------------------------
 

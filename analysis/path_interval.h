@@ -76,6 +76,17 @@ ProcedureResult effectiveRadiusRedonnet(double radiusMm, double cornerRadiusMm,
 ProcedureResult longRadiusBedi(double radiusMm, double cornerRadiusMm,
                                double leadDeg);  // Eq. (10), mm
 
+// ---- The circle of an effective radius ------------------------------------------------
+
+// Eq. (8): L/2 = sqrt(2 R_eff h - h^2) for an applicable `reff` (else `reff` itself);
+// not applicable when h > R_eff or L/2 > `radiusMm`, the tool's largest radius.
+// `name` prefixes the reasons.
+ProcedureResult circularHalfInterval(const char* name, const ProcedureResult& reff,
+                                     double scallopHeightMm, double radiusMm);
+// Eq. (12): h = R_eff - sqrt(R_eff^2 - (L/2)^2), same rules.
+ProcedureResult circularScallopHeight(const char* name, const ProcedureResult& reff,
+                                      double halfIntervalMm, double radiusMm);
+
 // ---- All procedures, for a CLI to iterate over ---------------------------------------
 
 enum class ProcedureToolType { Ball, Bull };

@@ -62,18 +62,18 @@ void printTable(const IntervalComparison& c) {
               c.scallopMm);
   std::printf("simulated exact L/2 = %.6f mm (+c side %.6f mm, -c side %.6f mm)\n\n",
               c.exact.halfIntervalMm(), c.exact.plusMm, c.exact.minusMm);
-  std::printf("%-14s %10s %18s %15s %15s  %s\n", "procedure", "L/2 [mm]", "sim. scallop [mm]",
+  std::printf("%-16s %10s %18s %15s %15s  %s\n", "procedure", "L/2 [mm]", "sim. scallop [mm]",
               "error [um]", "L/2-exact [um]", "source");
   for (const ProcedureComparison& p : c.procedures) {
     if (!p.applicable) {
-      std::printf("%-14s %s\n", p.name.c_str(), ("not applicable: " + p.reason).c_str());
+      std::printf("%-16s %s\n", p.name.c_str(), ("not applicable: " + p.reason).c_str());
       continue;
     }
     const std::string scallop =
         p.cusp.covered ? fmt::format("{:.6f}", p.cusp.heightMm) : std::string("uncut strip");
     const std::string error =
         p.cusp.covered ? micrometres(p.cusp.heightMm - c.scallopMm) : std::string("-");
-    std::printf("%-14s %10.6f %18s %15s %15s  %s\n", p.name.c_str(), p.halfIntervalMm,
+    std::printf("%-16s %10.6f %18s %15s %15s  %s\n", p.name.c_str(), p.halfIntervalMm,
                 scallop.c_str(), error.c_str(),
                 micrometres(p.halfIntervalMm - c.exact.halfIntervalMm()).c_str(), p.source.c_str());
   }
@@ -116,7 +116,9 @@ int runInterval(const IntervalArgs& args) {
 constexpr const char* kIntervalHelp =
     "Path interval (half step-over L/2, mm) for a scallop height h by every procedure of\n"
     "the seeds (computational: seed 000 Fig. 1; sekine, redonnet, bedi: seed 000 Eqs.\n"
-    "(4)-(11); ball: seed 001 Eq. (1)), each with the scallop that two simulated passes\n"
+    "(4)-(11); ball: seed 001 Eq. (1)) and by the two that take any cutter, lead and tilt\n"
+    "(exact: the cutter's shadow along the feed, to 1e-9 mm; effective_radius: the\n"
+    "osculating circle at the contact), each with the scallop that two simulated passes\n"
     "2 L/2 apart really leave and its error against h (um); and the simulated exact L/2,\n"
     "where a single simulated pass rises h above its floor (exact to 1e-10 mm, not\n"
     "limited by a grid). The pass feeds along +x; lead tilts the axis towards the feed,\n"

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "analysis/contact_curvature.h"
+#include "analysis/pass_section.h"
 #include "analysis/path_interval.h"
 #include "base/input_error.h"
 
@@ -13,6 +15,13 @@ namespace scallop {
 using nlohmann::json;
 
 namespace {
+
+constexpr const char* kExactProcedureSource =
+    "seed 000 Fig. 1 generalised: the shadow of any cutter by its support map "
+    "(analysis/pass_section.h)";
+constexpr const char* kEffectiveRadiusSource =
+    "osculating circle at the contact, Eqs. (8), (12); seed 000 Eq. (9) at lead only "
+    "(analysis/contact_curvature.h)";
 
 json numberOrNull(bool valid, double v) {
   return valid ? json(v) : json(nullptr);
@@ -29,40 +38,53 @@ IntervalComparison compareIntervals(const SimulatedPass& pass, double scallopMm)
   out.exact = pass.halfIntervals(scallopMm);
 
   const Cutter& c = pass.cutter();
-  if (c.type == CutterType::Flat) {
+  // Two passes 2 L/2 apart, simulated, for every applicable L/2.
+  auto simulate = [&](ProcedureComparison p) {
+    if (p.applicable) p.cusp = pass.cusp(2 * p.halfIntervalMm);
+    out.procedures.push_back(p);
+  };
+  if (c.type == CutterType::Flat || c.general()) {
     for (const ProcedureInfo& procedure : kProcedures) {
       ProcedureComparison p;
       p.name = procedure.name;
       p.source = procedure.source;
-      p.reason = p.name + ": the seeds give no procedure for a flat end mill (seed 000 " +
-                 "covers filleted, seed 001 Eq. (1) ball end mills)";
+      p.reason = p.name + ": the seeds give no procedure for a " + toString(c.type) +
+                 " cutter (seed 000 covers filleted, seed 001 Eq. (1) ball end mills)";
       out.procedures.push_back(p);
     }
-    return out;
-  }
-  ProcedureTool tool;
-  tool.type = c.type == CutterType::Ball ? ProcedureToolType::Ball : ProcedureToolType::Bull;
-  tool.radiusMm = c.radius;
-  tool.cornerRadiusMm = c.type == CutterType::Ball ? 0 : c.cornerRadius;
-  for (const NamedProcedureResult& r : halfIntervalProcedures(tool, pass.leadDeg(), scallopMm)) {
-    ProcedureComparison p;
-    p.name = r.name;
-    p.source = r.source;
-    p.applicable = r.result.applicable;
-    p.reason = r.result.reason;
-    // A ball's sphere looks the same in every posture; a torus does not, and the
-    // filleted procedures of seed 000 model the inclination along the feed only.
-    if (p.applicable && c.type == CutterType::Bull && pass.tiltDeg() != 0) {
-      p.applicable = false;
-      p.reason = r.name + ": seed 000 models inclination along the feed only; tilt = " +
-                 fmt::format("{:g}", pass.tiltDeg()) + " deg is outside it";
+  } else {
+    ProcedureTool tool;
+    tool.type = c.type == CutterType::Ball ? ProcedureToolType::Ball : ProcedureToolType::Bull;
+    tool.radiusMm = c.radius;
+    tool.cornerRadiusMm = c.type == CutterType::Ball ? 0 : c.cornerRadius;
+    for (const NamedProcedureResult& r : halfIntervalProcedures(tool, pass.leadDeg(), scallopMm)) {
+      ProcedureComparison p;
+      p.name = r.name;
+      p.source = r.source;
+      p.applicable = r.result.applicable;
+      p.reason = r.result.reason;
+      // A ball's sphere looks the same in every posture; a torus does not, and the
+      // filleted procedures of seed 000 model the inclination along the feed only.
+      if (p.applicable && c.type == CutterType::Bull && pass.tiltDeg() != 0) {
+        p.applicable = false;
+        p.reason = r.name + ": seed 000 models inclination along the feed only; tilt = " +
+                   fmt::format("{:g}", pass.tiltDeg()) + " deg is outside it";
+      }
+      if (p.applicable) p.halfIntervalMm = r.result.value;
+      simulate(p);
     }
-    if (p.applicable) {
-      p.halfIntervalMm = r.result.value;
-      p.cusp = pass.cusp(2 * p.halfIntervalMm);
-    }
-    out.procedures.push_back(p);
   }
+  // The procedures for every cutter, lead and tilt (issue 33).
+  const ProcedureResult exact = halfIntervalExact(c, pass.leadDeg(), pass.tiltDeg(), scallopMm);
+  simulate({"exact", kExactProcedureSource, exact.applicable, exact.reason, exact.value, {}});
+  const ProcedureResult osculating =
+      halfIntervalEffectiveRadius(c, pass.leadDeg(), pass.tiltDeg(), scallopMm);
+  simulate({"effective_radius",
+            kEffectiveRadiusSource,
+            osculating.applicable,
+            osculating.reason,
+            osculating.value,
+            {}});
   return out;
 }
 

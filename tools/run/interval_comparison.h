@@ -16,7 +16,7 @@ namespace scallop {
 
 // One procedure of analysis/path_interval.h, and what its L/2 really leaves.
 struct ProcedureComparison {
-  std::string name;    // "computational", "sekine", "redonnet", "bedi", "ball"
+  std::string name;    // the seeds' kProcedures names, "exact", "effective_radius"
   std::string source;  // seed and equation numbers
   bool applicable = false;
   std::string reason;         // why not applicable; empty otherwise
@@ -36,9 +36,12 @@ struct IntervalComparison {
   FeedMarkPrediction feedMarks;
 };
 
-// Runs every procedure for `h` and simulates each L/2 on `pass`. The seed 000 bull
-// procedures model inclination along the feed only, so with a tilt they are reported
-// as not applicable; none of them describes a flat end mill.
+// Runs every procedure for `h` and simulates each L/2 on `pass`: the seeds' (kProcedures
+// order), then "exact" (analysis/pass_section.h) and "effective_radius"
+// (analysis/contact_curvature.h), which take any cutter, lead and tilt. The seed 000
+// bull procedures model inclination along the feed only, so with a tilt they are
+// reported as not applicable; none of the seeds' describes a flat end mill or a
+// profile cutter.
 IntervalComparison compareIntervals(const SimulatedPass& pass, double scallopMm);
 
 // The `interval --json` document (lengths in mm, angles in degrees).

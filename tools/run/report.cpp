@@ -5,8 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 
+#include "analysis/contact_curvature.h"
+#include "analysis/pass_section.h"
 #include "base/version.h"
+#include "sweep/raster.h"
+#include "sweep/swept_segment.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
 
@@ -21,6 +26,33 @@ constexpr const char* kSkuNote =
 
 json number(double v) {
   return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+// The path-interval procedures' scallop for the raster's step-over, lead and tilt
+// beside the measured one, over the same span (between the first and the last pass's
+// floor contacts): the exact one (analysis/pass_section.h, every pass placed as
+// sweep/raster.cpp places it, a zigzag's reversed passes mirrored across the feed) and
+// the effective radius's (analysis/contact_curvature.h, two passes fed the same way),
+// for the cutter's solid of revolution; null where not applicable.
+void addScallopPredictions(const Job& job, int passes, double fromMm, double toMm, json& m) {
+  const RasterSpec& r = job.raster;
+  const bool alongX = r.direction == 'x';
+  const double crossMin = alongX ? job.stock.min.y : job.stock.min.x;
+  std::vector<PassPlacement> placements;
+  for (int k = 0; k < passes; ++k) {
+    // The section's +y is the cross-feed c = z x f: +y for feed +x, -x for feed +y.
+    const bool reversed = r.zigzag && (k % 2 == 1);
+    placements.push_back({crossMin + k * r.stepOver, reversed == alongX});
+  }
+  const PassSection section = PassSection::of(job.cutter, r.leadDeg, r.tiltDeg);
+  double exact = 0;
+  std::string reason;
+  const bool ok = section.coverScallop(placements, fromMm, toMm, &exact, &reason);
+  m["predicted_scallop_height"] = ok ? json(exact) : json(nullptr);
+  const ProcedureResult osculating =
+      scallopHeightEffectiveRadius(job.cutter, r.leadDeg, r.tiltDeg, 0.5 * r.stepOver);
+  m["predicted_scallop_height_effective_radius"] =
+      osculating.applicable ? json(osculating.value) : json(nullptr);
 }
 
 }  // namespace
@@ -96,8 +128,8 @@ GridSpec gridFromJson(const json& j) {
   return g;
 }
 
-// The highest point left above the floor between the first and the last pass (where
-// both neighbours have cut), i.e. the largest scallop on the map, mm.
+// The highest point left above the floor between the first and the last pass's floor
+// contacts (where both neighbours have cut), i.e. the largest scallop on the map, mm.
 json rasterMeasurements(const Job& job, const ZMap& map) {
   json m;
   const double floorZ = job.stock.max.z - job.raster.depth;
@@ -107,16 +139,29 @@ json rasterMeasurements(const Job& job, const ZMap& map) {
   const double crossMax = alongX ? job.stock.max.y : job.stock.max.x;
   const int passes = int(std::floor((crossMax - crossMin) / job.raster.stepOver + 1e-9)) + 1;
   if (passes < 2) return m;
-  const double lastPass = crossMin + (passes - 1) * job.raster.stepOver;
+  // Where pass k touches the floor: its tip's cross coordinate plus the lowest point's
+  // offset, which a tilt moves off the tip (and a zigzag mirrors on reversed passes),
+  // as sweep/raster.cpp poses the cutter.
+  auto contact = [&](int k) {
+    const bool reversed = job.raster.zigzag && (k % 2 == 1);
+    const Vec3 feed =
+        alongX ? Vec3{reversed ? -1.0 : 1.0, 0, 0} : Vec3{0, reversed ? -1.0 : 1.0, 0};
+    const Vec3 axis = leadTiltAxis(feed, job.raster.leadDeg, job.raster.tiltDeg);
+    const Vec3 lowest = cutterSupport(job.cutter, axis, Vec3{0, 0, -1});
+    return crossMin + k * job.raster.stepOver + (alongX ? lowest.y : lowest.x);
+  };
+  const double first = std::min(contact(0), contact(passes - 1));
+  const double last = std::max(contact(0), contact(passes - 1));
   double top = -HUGE_VAL;
   const GridSpec& g = map.grid();
   for (int64_t j = 0; j < g.ny; ++j) {
     for (int64_t i = 0; i < g.nx; ++i) {
       const double c = alongX ? g.cellCentreY(j) : g.cellCentreX(i);
-      if (c >= crossMin && c <= lastPass) top = std::max(top, map.at(i, j));
+      if (c >= first && c <= last) top = std::max(top, map.at(i, j));
     }
   }
   m["max_scallop_height"] = top - floorZ;
+  addScallopPredictions(job, passes, first, last, m);
   return m;
 }
 

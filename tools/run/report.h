@@ -61,7 +61,10 @@ GridSpec gridFromJson(const nlohmann::json& j);
 nlohmann::json frameCellsJson(const FrameCellCounts& counts);
 
 // For a raster: floor_z and the largest scallop between the first and the last pass
-// on `map`; a band of a map gives its own share.
+// on `map` (a band of a map gives its own share), and beside it the scallop the
+// path-interval procedures predict for the step-over (predicted_scallop_height: exact,
+// analysis/pass_section.h; predicted_scallop_height_effective_radius: the osculating
+// circle, analysis/contact_curvature.h; null where not applicable).
 nlohmann::json rasterMeasurements(const Job& job, const ZMap& map);
 
 // The "surface_stats" block: {"standard", "levelling", "cells", "area_mm2", "Sa_mm",

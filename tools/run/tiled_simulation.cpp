@@ -250,6 +250,10 @@ void TiledOutput::add(const ZMap& band, const json& stats) {
   if (stats.contains("raster")) {
     const json& r = stats["raster"];
     raster_["floor_z"] = r.at("floor_z");
+    // The procedures' predictions depend on the job only, the same in every band.
+    for (const char* key :
+         {"predicted_scallop_height", "predicted_scallop_height_effective_radius"})
+      if (r.contains(key)) raster_[key] = r[key];
     // A band without cells between the first and last pass has no scallop (-inf,
     // stored as null); the map's largest scallop is the largest of the bands'.
     if (r.contains("max_scallop_height")) {

@@ -12,6 +12,7 @@
 #include "analysis/tool_conditions.h"
 #include "tools/io/atomic_file.h"
 #include "tools/render/svg_plot.h"
+#include "tools/run/interval_comparison.h"
 
 namespace scallop {
 
@@ -240,6 +241,47 @@ void seed001(Run& run) {
   for (ValidationTable* t : {&t1, &t2, &t3, &t4}) run.tables.push_back(*t);
 }
 
+// Beyond the seeds: the procedures that take any cutter, lead and tilt (issue 33), each
+// L/2 beside the simulated exact one and the scallop two simulated passes 2 L/2 apart
+// leave. The conditions cover what seed 000's procedures cannot: tilts and a flat end
+// mill.
+void anyCutter(Run& run) {
+  struct Condition {
+    const char* name;
+    CutterType type;
+    double radius, cornerRadius, leadDeg, tiltDeg, h;
+  };
+  const Condition conditions[] = {{"ball_tilted", CutterType::Ball, 3, 0, 10, -5, 0.05},
+                                  {"bull_lead", CutterType::Bull, 6, 2, 10, 0, 0.1},
+                                  {"bull_lead5_tilt7", CutterType::Bull, 3, 1, 5, 7, 0.05},
+                                  {"bull_lead10_tilt20", CutterType::Bull, 3, 1, 10, 20, 0.05},
+                                  {"flat_lead", CutterType::Flat, 3, 0, 10, 0, 0.05}};
+  ValidationTable t{"any_cutter",
+                    "The exact procedure and the effective radius at the contact (any cutter, "
+                    "lead and tilt) against the simulated truth",
+                    {"condition", "tool", "radius_mm", "corner_radius_mm", "lead_deg", "tilt_deg",
+                     "h_mm", "procedure", "half_interval_mm", "simulated_exact_half_interval_mm",
+                     "minus_exact_um", "simulated_scallop_mm", "scallop_error_um"},
+                    {}};
+  for (const Condition& c : conditions) {
+    const SimulatedPass pass(Cutter::make(c.type, c.radius, c.cornerRadius), c.leadDeg, c.tiltDeg);
+    const IntervalComparison cmp = compareIntervals(pass, c.h);
+    for (const ProcedureComparison& p : cmp.procedures) {
+      if (p.name != "exact" && p.name != "effective_radius") continue;
+      const bool simulated = p.applicable && p.cusp.covered;
+      const double exact = cmp.exact.halfIntervalMm();
+      t.rows.push_back({c.name, toString(c.type), c.radius,
+                        c.type == CutterType::Bull ? json(c.cornerRadius) : json(nullptr),
+                        c.leadDeg, c.tiltDeg, c.h, p.name,
+                        p.applicable ? json(p.halfIntervalMm) : json(nullptr), exact,
+                        p.applicable ? json(1000 * (p.halfIntervalMm - exact)) : json(nullptr),
+                        simulated ? json(p.cusp.heightMm) : json(nullptr),
+                        simulated ? json(1000 * (p.cusp.heightMm - c.h)) : json(nullptr)});
+    }
+  }
+  run.tables.push_back(t);
+}
+
 }  // namespace
 
 ValidationResult runValidation(const ValidationSettings& args) {
@@ -249,6 +291,7 @@ ValidationResult runValidation(const ValidationSettings& args) {
   run.outDir = args.outDir;
   seed000(run);
   seed001(run);
+  anyCutter(run);
 
   json doc;
   doc["output_dir"] = args.outDir;

@@ -66,7 +66,8 @@ TEST_F(IntervalCli, BullWithLeadDocument) {
   const double exact = halfIntervalComputational(3, 1, 5, 0.05).value;
   EXPECT_NEAR(doc["simulated_half_interval"].get<double>(), exact, 1e-6);
 
-  const std::vector<std::string> names = {"computational", "sekine", "redonnet", "bedi", "ball"};
+  const std::vector<std::string> names = {"computational", "sekine", "redonnet",        "bedi",
+                                          "ball",          "exact",  "effective_radius"};
   ASSERT_EQ(doc["procedures"].size(), names.size());
   SimulatedPass pass(Cutter::make(CutterType::Bull, 3, 1), 5, 0);
   for (size_t i = 0; i < names.size(); ++i) {
@@ -86,6 +87,9 @@ TEST_F(IntervalCli, BullWithLeadDocument) {
     EXPECT_NEAR(p["simulated_scallop"].get<double>(), pass.cusp(2 * l2).heightMm, 1e-9);
   }
   EXPECT_NEAR(procedure(doc, "computational")["simulated_scallop"].get<double>(), 0.05, 1e-6);
+  EXPECT_NEAR(procedure(doc, "exact")["half_interval"].get<double>(), exact, 1e-9);
+  EXPECT_NEAR(procedure(doc, "effective_radius")["half_interval"].get<double>(),
+              procedure(doc, "redonnet")["half_interval"].get<double>(), 1e-12);
   EXPECT_NEAR(procedure(doc, "sekine")["half_interval"].get<double>(),
               halfIntervalSekine(3, 1, 5, 0.05).value, 1e-12);
 }
@@ -107,9 +111,16 @@ TEST_F(IntervalCli, InclinedFlatEndMillIsTheEllipse) {
   EXPECT_NEAR(doc["simulated_half_interval"].get<double>(),
               3 * std::sqrt(1 - std::pow((s - 0.05) / s, 2)), 1e-6);
   for (const json& p : doc["procedures"]) {
+    if (p["name"] == "exact") continue;
     EXPECT_FALSE(p["applicable"].get<bool>()) << p["name"];
-    EXPECT_NE(p["reason"].get<std::string>().find("flat"), std::string::npos);
+    EXPECT_NE(p["reason"].get<std::string>().find("flat"), std::string::npos) << p["reason"];
   }
+  // The exact procedure covers it, and its L/2 leaves h in the simulation.
+  const json& exact = procedure(doc, "exact");
+  ASSERT_TRUE(exact["applicable"].get<bool>());
+  EXPECT_NEAR(exact["half_interval"].get<double>(), doc["simulated_half_interval"].get<double>(),
+              1e-9);
+  EXPECT_NEAR(exact["simulated_scallop"].get<double>(), 0.05, 1e-9);
 }
 
 TEST_F(IntervalCli, TiltReportsBothSidesAndLeavesTheBullProceduresOut) {
@@ -124,6 +135,12 @@ TEST_F(IntervalCli, TiltReportsBothSidesAndLeavesTheBullProceduresOut) {
     EXPECT_FALSE(procedure(doc, name)["applicable"].get<bool>()) << name;
     EXPECT_NE(procedure(doc, name)["reason"].get<std::string>().find("tilt"), std::string::npos);
   }
+  // With the tilt, the exact procedure's step-over is the simulated one.
+  const json& exact = procedure(doc, "exact");
+  ASSERT_TRUE(exact["applicable"].get<bool>());
+  EXPECT_NEAR(exact["half_interval"].get<double>(), 0.5 * (plus + minus), 1e-9);
+  EXPECT_NEAR(exact["simulated_scallop"].get<double>(), 0.05, 1e-9);
+  EXPECT_TRUE(procedure(doc, "effective_radius")["applicable"].get<bool>());
 }
 
 TEST_F(IntervalCli, TableForPeople) {

@@ -6,7 +6,7 @@ def test_validate_equals_the_cli(cli_json, tmp_path):
     expected = cli_json("validate", "-o", tmp_path / "cli")
     got = scallop.validate(tmp_path / "py")
     assert got["output_dir"] == str(tmp_path / "py")
-    assert len(got["tables"]) == 8 and len(got["pictures"]) == 24
+    assert len(got["tables"]) == 9 and len(got["pictures"]) == 24
     expected["output_dir"] = got["output_dir"]
     assert got == expected
     for table in got["tables"].values():

@@ -34,10 +34,10 @@ TEST_F(ValidationRun, WritesEveryTableAndPictureItReturns) {
   ValidationSettings s;
   s.outDir = (dir_ / "out").string();
   const ValidationResult r = runValidation(s);
-  ASSERT_EQ(r.tables.size(), 8u);
+  ASSERT_EQ(r.tables.size(), 9u);
   const char* const names[] = {"seed000_table2", "seed000_table3", "seed000_table4",
                                "seed000_table5", "seed001_table1", "seed001_table2",
-                               "seed001_table3", "seed001_table4"};
+                               "seed001_table3", "seed001_table4", "any_cutter"};
   for (size_t k = 0; k < r.tables.size(); ++k) {
     const ValidationTable& t = r.tables[k];
     EXPECT_EQ(t.name, names[k]);
@@ -50,6 +50,16 @@ TEST_F(ValidationRun, WritesEveryTableAndPictureItReturns) {
     ASSERT_EQ(doc["rows"].size(), t.rows.size()) << t.name;
     EXPECT_EQ(doc["rows"][0][t.columns[0]], t.rows[0][0]) << t.name;
   }
+  // any_cutter: the exact procedure's L/2 is the simulated one to 1e-9 mm and leaves h.
+  const ValidationTable& any = r.tables.back();
+  int exactRows = 0;
+  for (const auto& row : any.rows) {
+    if (row[7] != "exact") continue;
+    ++exactRows;
+    EXPECT_NEAR(row[10].get<double>(), 0, 1e-6) << row[0];  // um
+    EXPECT_NEAR(row[12].get<double>(), 0, 1e-6) << row[0];  // um
+  }
+  EXPECT_EQ(exactRows, 5);
   EXPECT_EQ(r.pictures.size(), 24u);
   for (const std::string& p : r.pictures) {
     EXPECT_EQ(p.rfind("profiles/", 0), 0u) << p;
