@@ -94,6 +94,13 @@ void deviceError(void* user, RTCError code, const char* message) {
   *last = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
 }
 
+// Embree's memory monitor: it reports every allocation (bytes > 0) and free (< 0); the
+// scene keeps the net sum for its accounting (SceneStats::embreeBytes).
+bool embreeMemory(void* user, ssize_t bytes, bool /*post*/) {
+  static_cast<std::atomic<int64_t>*>(user)->fetch_add(int64_t(bytes), std::memory_order_relaxed);
+  return true;
+}
+
 }  // namespace
 
 SectionMemo* SweptScene::QueryCache::memoFor(uint32_t segment, double y) {
@@ -226,6 +233,7 @@ void SweptScene::Impl::buildEmbree() {
   device = rtcNewDevice(nullptr);
   if (!device) throw std::runtime_error("Embree: cannot create a device");
   rtcSetDeviceErrorFunction(device, deviceError, &lastError);
+  rtcSetDeviceMemoryMonitorFunction(device, embreeMemory, &embreeBytes);
   scene = rtcNewScene(device);
   // Robust traversal: a vertical ray exactly on a box face must not slip through.
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
@@ -258,8 +266,14 @@ SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& opti
   impl_->grid = std::make_unique<TileGrid>();
   impl_->grid->build(impl_->tiles, options.regionHalfSize);
   impl_->buildEmbree();
-  impl_->stats.buildSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  SceneStats& stats = impl_->stats;
+  for (const SweptMove& s : impl_->segments)
+    stats.moveBytes += SweptMove::bytesPerMove(s.turning(), s.teeth() != nullptr);
+  stats.moveBytes += (impl_->segments.capacity() - impl_->segments.size()) * sizeof(SweptMove);
+  stats.tileBytes = impl_->tiles.capacity() * sizeof(TileBox);
+  stats.gridBytes = impl_->grid->bytes();
+  stats.embreeBytes = size_t(std::max<int64_t>(0, impl_->embreeBytes.load()));
+  stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 SweptScene::~SweptScene() {

@@ -46,6 +46,11 @@ struct SceneStats {
   size_t tiles = 0;             // Embree primitives
   size_t boundEvaluations = 0;  // exact evaluations spent on building the bounds
   double buildSeconds = 0;
+  // The scene's own accounting of what it holds once built, bytes: the moves (the
+  // SweptMove objects and what they own, SweptMove::bytesPerMove), the culling tiles,
+  // the tile grid, and Embree's allocations (its memory monitor, net of frees).
+  size_t moveBytes = 0, tileBytes = 0, gridBytes = 0, embreeBytes = 0;
+  size_t bytes() const { return moveBytes + tileBytes + gridBytes + embreeBytes; }
 };
 
 class SweptScene {
