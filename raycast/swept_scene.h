@@ -32,12 +32,26 @@ struct SceneOptions {
   // The knot spacing (mm) given to every turning move (SweptMove::setContactKnotSpacing;
   // 0: none); negative leaves the moves' own.
   double contactKnotSpacing = -1;
+  // The grid's cells per cutting move of the program that reaches them
+  // (programCellsPerMove, raycast/simulation.h; HUGE_VAL: unknown). Below
+  // kCellsPerMoveForTiles every move is one culling tile (cullingTileSide).
+  double cellsPerMove = HUGE_VAL;
 };
 
+// Programs with fewer cells than this per move get one culling tile a move. A tile costs
+// the build 5 exact evaluations and its share of the tile grid and of Embree's hierarchy
+// (~1 KB in all); finer tiles pay back only through the cells they cull for, ~4 exact
+// evaluations a cell shared by every move over it. Measured on B9 (callgrind, 4 mm, 11
+// cells a move): one tile a move builds in a quarter of the instructions of ~19 and
+// casts in 1.9x, 288 against 704 million in all; B3 and B4 (4 300 and 490 cells a move,
+// and at the performance guard's areas ~100 and more) keep theirs.
+constexpr double kCellsPerMoveForTiles = 64;
+
 // The side (mm) of the culling tiles of a segment whose xy box has the given area
-// (mm^2): SceneOptions::tileSize if set, else max(R / 8, sqrt(area / N)) with N = 16
-// tiles for moves shorter than the cutter radius R and 64 otherwise. The memory estimate
-// (estimateSceneBytes, raycast/simulation.h) uses the same rule.
+// (mm^2): SceneOptions::tileSize if set; else, in a program of fewer than
+// kCellsPerMoveForTiles cells a move, HUGE_VAL (one tile); else max(R / 8, sqrt(area /
+// N)) with N = 16 tiles for moves shorter than the cutter radius R and 64 otherwise.
+// The memory estimate (estimateSceneBytes, raycast/simulation.h) uses the same rule.
 double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
                        const SceneOptions& options);
 

@@ -58,7 +58,7 @@ RunMemory estimateRunMemory(const Job& job, const GridSpec& grid, bool exact,
   RunMemory memory;
   memory.mapBytes = mapBytes(grid);
   if (exact)
-    memory.sceneBytes = estimateSceneBytes(job.cutter, job.path, job.stock.max.z,
+    memory.sceneBytes = estimateSceneBytes(job.cutter, job.path, job.stock, grid.spacing,
                                            &memory.cuttingMoves, job.cutting);
   memory.availableBytes = availableBytes;
   return memory;
