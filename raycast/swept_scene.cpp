@@ -324,7 +324,6 @@ SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& opti
   SceneStats& stats = impl_->stats;
   for (const SweptMove& s : impl_->segments)
     stats.moveBytes += SweptMove::bytesPerMove(s.turning(), s.teeth() != nullptr);
-  stats.moveBytes += (impl_->segments.capacity() - impl_->segments.size()) * sizeof(SweptMove);
   // The tiles kept (their storage's capacity past them is never touched).
   stats.tileBytes = impl_->tiles.size() * sizeof(TileBox);
   stats.gridBytes = impl_->grid->bytes();
