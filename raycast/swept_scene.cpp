@@ -181,7 +181,7 @@ uint32_t boundSegmentTiles(const SweptMove& seg, uint32_t k, const SegmentGrid& 
       // A tile's planes from its centre and corners; a whole move's from its centre and
       // 0.18 of its box's width towards each side: its corners lie outside the
       // footprint, whose steep rim planes bound nothing inside it, while these follow the
-      // bottom's slopes on all four sides (B9 at 4 mm, cast instructions: corners 2.7x,
+      // bottom's slopes on all four sides (B9 at 4 mm, cast instructions: corners 3.7x,
       // 0.25 of the width 1.08x, 0.1 1.09x, 0.32 1.23x those of 0.18).
       const double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
       const double qx = 0.18 * (x1 - x0), qy = 0.18 * (y1 - y0);

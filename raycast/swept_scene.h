@@ -41,10 +41,10 @@ struct SceneOptions {
 // Programs with fewer cells than this per move get one culling tile a move. A tile costs
 // the build 5 exact evaluations and its share of the tile grid and of Embree's hierarchy
 // (~1 KB in all); finer tiles pay back only through the cells they cull for, ~4 exact
-// evaluations a cell shared by every move over it. Measured on B9 (callgrind, 4 mm, 11
-// cells a move): one tile a move builds in a quarter of the instructions of ~19 and
-// casts in 1.9x, 288 against 704 million in all; B3 and B4 (4 300 and 490 cells a move,
-// and at the performance guard's areas ~100 and more) keep theirs.
+// evaluations a cell shared by every move over it. Measured on B9 (callgrind, 4 mm, 6
+// cells a move): one tile a move instead of ~19 builds in 133 instead of 633 million
+// instructions and casts in 75 instead of 71, the same heights; B3 and B4 (4 300 and
+// 490 cells a move full size, ~460 and 101 at the performance guard's areas) keep theirs.
 constexpr double kCellsPerMoveForTiles = 64;
 
 // The side (mm) of the culling tiles of a segment whose xy box has the given area
