@@ -6,6 +6,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -144,6 +145,7 @@ struct SweptScene::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::string lastError;
+  std::atomic<int64_t> embreeBytes{0};  // Embree's allocations less its frees (its monitor)
 
   void buildTiles(const SceneOptions& options);
   void buildEmbree();

@@ -28,28 +28,64 @@ SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const Simulation
   return sceneOptions;
 }
 
-double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double stockTop,
-                          size_t* moves, const CuttingModel& cutting) {
+namespace {
+
+// A box that holds the cutter at every pose of a move (xy only; z from the tips'
+// lower end down by nothing, up by R + flute): the tips' box grown by the cutter's widest
+// horizontal reach at the more leaning end (slerp between axes with k >= 0 never leans
+// more than its ends). `R` is the cutter's radius with runout.
+struct MoveReach {
+  double x0, y0, x1, y1;
+};
+MoveReach moveReach(const Move& m, double R, double flute) {
+  const auto lean = [](const Vec3& a) { return std::hypot(a.x, a.y) / length(a); };
+  const double reach = R + flute * std::fmax(lean(m.from.axis), lean(m.to.axis));
+  return {std::fmin(m.from.tip.x, m.to.tip.x) - reach, std::fmin(m.from.tip.y, m.to.tip.y) - reach,
+          std::fmax(m.from.tip.x, m.to.tip.x) + reach, std::fmax(m.from.tip.y, m.to.tip.y) + reach};
+}
+
+// A move that can cut: not a rapid, and its lowest tip within R + flute of the stock top.
+bool mayCut(const Move& m, double R, double flute, double stockTop) {
+  return !m.rapid && std::fmin(m.from.tip.z, m.to.tip.z) - R - flute < stockTop;
+}
+
+}  // namespace
+
+double programCellsPerMove(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                           double spacing) {
+  const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
+  size_t reaching = 0;
+  for (const Move& m : path.moves) {
+    if (!mayCut(m, R, flute, stock.max.z)) continue;
+    const MoveReach r = moveReach(m, R, flute);
+    reaching +=
+        r.x1 >= stock.min.x && r.x0 <= stock.max.x && r.y1 >= stock.min.y && r.y0 <= stock.max.y;
+  }
+  if (reaching == 0 || !(spacing > 0)) return HUGE_VAL;
+  const double cells =
+      (stock.max.x - stock.min.x) * (stock.max.y - stock.min.y) / (spacing * spacing);
+  return cells / double(reaching);
+}
+
+double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                          double spacing, size_t* moves, const CuttingModel& cutting) {
   // TileBox (152) + Embree's BVH share (measured: 370 on the scene of scene_memory_test)
   // + the most the tile grid takes a tile.
   constexpr double kBytesPerTile = 420 + scene_detail::TileGrid::kMaxBytesPerTile;
   // With runout the moves hold the spindle envelope, radius R + runout.
   const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
+  SceneOptions tiling;
+  tiling.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
   double need = 0;
   size_t counted = 0;
   for (const Move& m : path.moves) {
-    if (m.rapid || std::fmin(m.from.tip.z, m.to.tip.z) - R - flute >= stockTop) continue;
-    // A box that holds the cutter at every pose of the move: the tips' box grown by the
-    // cutter's widest horizontal reach at the more leaning end (slerp between axes with
-    // k >= 0 never leans more than its ends).
-    const auto lean = [](const Vec3& a) { return std::hypot(a.x, a.y) / length(a); };
-    const double reach = 2 * (R + flute * std::fmax(lean(m.from.axis), lean(m.to.axis)));
-    const double w = std::fabs(m.to.tip.x - m.from.tip.x) + reach;
-    const double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
-    const double T = cullingTileSide(R, length(m.to.tip - m.from.tip), w * h, SceneOptions());
+    if (!mayCut(m, R, flute, stock.max.z)) continue;
+    const MoveReach r = moveReach(m, R, flute);
+    const double w = r.x1 - r.x0, h = r.y1 - r.y0;
+    const double T = cullingTileSide(R, length(m.to.tip - m.from.tip), w * h, tiling);
     const bool turning = PoseCurve::turns(m.from.axis, m.to.axis);
     need += double(SweptMove::bytesPerMove(turning, cutting.teeth())) +
-            kBytesPerTile * std::ceil(w / T) * std::ceil(h / T);
+            kBytesPerTile * std::fmax(1, std::ceil(w / T)) * std::fmax(1, std::ceil(h / T));
     ++counted;
   }
   if (moves) *moves = counted;
@@ -59,8 +95,9 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double sto
 std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
                                        const Box3& stock, double spacing,
                                        const SimulationOptions& options) {
-  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.cutting),
-                                      sceneOptionsFor(stock, spacing, options));
+  SceneOptions sceneOptions = sceneOptionsFor(stock, spacing, options);
+  sceneOptions.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
+  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.cutting), sceneOptions);
 }
 
 SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,

@@ -33,16 +33,26 @@ struct SimulationResult {
 // The scene options simulate() uses for cells of side `spacing` (mm) under `stock`.
 SceneOptions sceneOptionsFor(const Box3& stock, double spacing, const SimulationOptions& options);
 
+// The cells of a grid of side `spacing` (mm) over `stock` per cutting move of `path` that
+// reaches below the stock top inside the stock's xy box (HUGE_VAL: none does):
+// SceneOptions::cellsPerMove, from the moves alone, so that the scene and its estimate
+// (estimateSceneBytes) choose the same culling tiles.
+double programCellsPerMove(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                           double spacing);
+
 // Bytes the culling scene of `path` will hold, estimated before it is built from the
-// moves alone: per cutting move that reaches below `stockTop`, the SweptMove (turning or
-// constant-axis, SweptMove::bytesPerMove) and its culling tiles (cullingTileSide's grid
-// over a box that holds the move, each tile counted as kept, ~500 bytes with its share
-// of Embree's hierarchy). Measured on B3's path (22,960 turning moves of 0.05 mm):
-// 6.8 KB a move built, 12.7 KB estimated; it errs high, never low. `moves`, if given,
-// receives the number of moves counted. With teeth (`cutting`) each move also holds a
-// ToothSweep.
-double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double stockTop,
-                          size_t* moves = nullptr, const CuttingModel& cutting = {});
+// moves alone: per cutting move that reaches below the stock top, the SweptMove (turning
+// or constant-axis, SweptMove::bytesPerMove) and its culling tiles (cullingTileSide's
+// grid over a box that holds the move, each tile counted as kept, ~500 bytes with its
+// share of Embree's hierarchy and the tile grid); docs/performance.md ("Memory") has what
+// it is per move. It errs high, never low: B3's path (22,960 turning moves of 0.05 mm)
+// builds 6.8 KB a move for 12.7 KB estimated; a program of one tile a move (fewer than
+// kCellsPerMoveForTiles cells a move) is estimated within 20 % (tests/raycast/
+// scene_memory_test.cpp). `moves`, if given, receives the number of moves counted. With
+// teeth (`cutting`) each move also holds a ToothSweep.
+double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                          double spacing, size_t* moves = nullptr,
+                          const CuttingModel& cutting = {});
 
 // The culling scene of `path` for a grid of cells of side `spacing` (mm): built once,
 // it serves any number of sub-grids (bands of a map too large to hold).

@@ -94,6 +94,13 @@ void deviceError(void* user, RTCError code, const char* message) {
   *last = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
 }
 
+// Embree's memory monitor: it reports every allocation (bytes > 0) and free (< 0); the
+// scene keeps the net sum for its accounting (SceneStats::embreeBytes).
+bool embreeMemory(void* user, ssize_t bytes, bool /*post*/) {
+  static_cast<std::atomic<int64_t>*>(user)->fetch_add(int64_t(bytes), std::memory_order_relaxed);
+  return true;
+}
+
 }  // namespace
 
 SectionMemo* SweptScene::QueryCache::memoFor(uint32_t segment, double y) {
@@ -106,6 +113,7 @@ SectionMemo* SweptScene::QueryCache::memoFor(uint32_t segment, double y) {
 double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
                        const SceneOptions& options) {
   if (options.tileSize > 0) return options.tileSize;
+  if (options.cellsPerMove < kCellsPerMoveForTiles && moveLength < cutterRadius) return HUGE_VAL;
   // Tiles of R/8 keep the box bounds tight on long moves; a short move gets at most
   // ~N tiles, since bounding costs 5 exact evaluations a tile and the per-cell plane
   // test keeps the culling sharp anyway. Moves shorter than the cutter radius (CAM
@@ -121,16 +129,101 @@ double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
 // downward normal N through C's support value h_C(N) lies below all of C; on the tile
 // its lowest value is at a corner. The normals come from exact lowest points at the
 // tile's centre and corners (each one's supporting plane is tight there).
+namespace {
+
+// A segment's xy box cut into nx x ny tiles (cullingTileSide); nx = 0: the segment never
+// goes below the stock top.
+struct SegmentGrid {
+  Box3 box;
+  int nx = 0, ny = 0;
+  bool whole = false;  // one tile for the whole move (cullingTileSide's dense programs)
+};
+
+// Writes the tiles of segment k that meet its footprint and can go below the stock top
+// to `out` (room for nx * ny) and returns how many; `evaluations` counts the exact ones.
+uint32_t boundSegmentTiles(const SweptMove& seg, uint32_t k, const SegmentGrid& grid,
+                           double stockTop, TileBox* out, size_t& evaluations) {
+  const Box3& box = grid.box;
+  const int nx = grid.nx, ny = grid.ny;
+  if (nx == 0) return 0;
+  const double tx = (box.max.x - box.min.x) / nx, ty = (box.max.y - box.min.y) / ny;
+
+  // The footprint's support in 16 horizontal directions, to drop tiles it misses. A
+  // single tile is the segment's box, which holds the footprint: none to drop (B9: a
+  // quarter of the scene's instructions went to these supports).
+  constexpr int kDirs = 16;
+  const int dirsUsed = nx * ny > 1 ? kDirs : 0;
+  double footprint[kDirs];
+  Vec3 dirs[kDirs];
+  for (int i = 0; i < dirsUsed; ++i) {
+    const double a = 2 * kPi * i / kDirs;
+    dirs[i] = {std::cos(a), std::sin(a), 0};
+    footprint[i] = seg.support(dirs[i]);
+  }
+
+  uint32_t kept = 0;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      const double x0 = box.min.x + i * tx, x1 = i + 1 == nx ? box.max.x : x0 + tx;
+      const double y0 = box.min.y + j * ty, y1 = j + 1 == ny ? box.max.y : y0 + ty;
+      const double cx[4] = {x0, x1, x0, x1}, cy[4] = {y0, y0, y1, y1};
+      bool disjoint = false;
+      for (int d = 0; d < dirsUsed && !disjoint; ++d) {
+        double lo = HUGE_VAL;
+        for (int c = 0; c < 4; ++c) lo = std::min(lo, dirs[d].x * cx[c] + dirs[d].y * cy[c]);
+        disjoint = lo > footprint[d] + 1e-9;
+      }
+      if (disjoint) continue;
+
+      double lower = box.min.z;
+      TileBox t;
+      t.planes = 0;
+      // A tile's planes from its centre and corners; a whole move's from its centre and
+      // 0.18 of its box's width towards each side: its corners lie outside the
+      // footprint, whose steep rim planes bound nothing inside it, while these follow the
+      // bottom's slopes on all four sides (B9 at 4 mm, cast instructions: corners 3.7x,
+      // 0.25 of the width 1.08x, 0.1 1.09x, 0.32 1.23x those of 0.18).
+      const double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1);
+      const double qx = 0.18 * (x1 - x0), qy = 0.18 * (y1 - y0);
+      const double sx[5] = {mx, grid.whole ? mx - qx : x0, grid.whole ? mx + qx : x1,
+                            grid.whole ? mx : x0, grid.whole ? mx : x1};
+      const double sy[5] = {my, grid.whole ? my : y0, grid.whole ? my : y0,
+                            grid.whole ? my - qy : y1, grid.whole ? my + qy : y1};
+      for (int s = 0; s < kSamplesPerTile; ++s) {
+        const LowestPoint lp = seg.planeHint(sx[s], sy[s]);
+        ++evaluations;
+        TilePlane plane;
+        if (!planeFrom(seg, lp, sx[s], sy[s], plane)) continue;
+        t.plane[t.planes++] = plane;
+        double planeMin = HUGE_VAL;
+        for (int c = 0; c < 4; ++c)
+          planeMin = std::min(planeMin, plane.a + plane.b * cx[c] + plane.c * cy[c]);
+        lower = std::max(lower, planeMin);
+      }
+      if (lower >= stockTop) continue;  // the whole tile stays above the stock
+      t.lower[0] = roundDown(x0), t.lower[1] = roundDown(y0), t.lower[2] = roundDown(lower);
+      t.upper[0] = roundUp(x1), t.upper[1] = roundUp(y1);
+      t.upper[2] = std::max(t.lower[2], roundUp(std::min(box.max.z, stockTop)));
+      t.segment = k;
+      out[kept++] = t;
+    }
+  }
+  return kept;
+}
+
+// Segments are bounded a batch at a time into a scratch of at most about this many
+// tiles (~40 MB), reused: the whole program's scratch, sized for every tile before the
+// footprint and the stock drop a quarter of them, was a third of B9's peak memory.
+constexpr size_t kScratchTiles = size_t(1) << 18;
+
+}  // namespace
+
 void SweptScene::Impl::buildTiles(const SceneOptions& options) {
   const double stockTop = options.stockTop;
   // Each segment's grid of tiles first: it bounds how many tiles the segment can keep, so
-  // every segment writes its tiles into its own slice of one scratch array (no small
-  // allocations on the worker threads, whose freed memory their malloc arenas would keep
-  // resident through the cast: 40 to 110 MB on B3).
-  struct SegmentGrid {
-    Box3 box;
-    int nx = 0, ny = 0;  // 0: the segment never goes below the stock top
-  };
+  // every segment of a batch writes its tiles into its own slice of one scratch array (no
+  // small allocations on the worker threads, whose freed memory their malloc arenas
+  // would keep resident through the cast: 40 to 110 MB on B3).
   std::vector<SegmentGrid> grids(segments.size());
   tbb::parallel_for(size_t(0), segments.size(), [&](size_t k) {
     const SweptMove& seg = segments[k];
@@ -140,85 +233,54 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
     const Box3& box = g.box;
     const double T = cullingTileSide(seg.cutter().radius, length(seg.end() - seg.start()),
                                      (box.max.x - box.min.x) * (box.max.y - box.min.y), options);
+    g.whole = T == HUGE_VAL;
     g.nx = std::max(1, int(std::ceil((box.max.x - box.min.x) / T)));
     g.ny = std::max(1, int(std::ceil((box.max.y - box.min.y) / T)));
   });
-  std::vector<size_t> slice(segments.size() + 1, 0);
-  for (size_t k = 0; k < segments.size(); ++k)
-    slice[k + 1] = slice[k] + size_t(grids[k].nx) * size_t(grids[k].ny);
-  TileStorage scratch(slice.back());
-  std::vector<uint32_t> kept(segments.size(), 0);
-  std::vector<size_t> evalsPerSegment(segments.size(), 0);
-  tbb::parallel_for(size_t(0), segments.size(), [&](size_t k) {
-    const SweptMove& seg = segments[k];
-    const Box3& box = grids[k].box;
-    const int nx = grids[k].nx, ny = grids[k].ny;
-    if (nx == 0) return;
-    const double tx = (box.max.x - box.min.x) / nx, ty = (box.max.y - box.min.y) / ny;
-
-    // The footprint's support in 16 horizontal directions, to drop tiles it misses.
-    constexpr int kDirs = 16;
-    double footprint[kDirs];
-    Vec3 dirs[kDirs];
-    for (int i = 0; i < kDirs; ++i) {
-      const double a = 2 * kPi * i / kDirs;
-      dirs[i] = {std::cos(a), std::sin(a), 0};
-      footprint[i] = seg.support(dirs[i]);
+  size_t most = 0;  // tiles before any is dropped: the kept ones' bound
+  for (const SegmentGrid& g : grids) most += size_t(g.nx) * size_t(g.ny);
+  // Room for every tile, of which only those kept are ever written (the allocator leaves
+  // the rest untouched, so the pages past them are never resident).
+  tiles.reserve(most);
+  TileStorage scratch;
+  std::vector<size_t> slice, offset;
+  std::vector<uint32_t> kept;
+  std::vector<size_t> evalsPerSegment;
+  for (size_t first = 0; first < segments.size();) {
+    // The batch [first, last): at least one segment, up to kScratchTiles tiles.
+    slice.assign(1, 0);
+    size_t last = first;
+    while (last < segments.size() &&
+           (last == first ||
+            slice.back() + size_t(grids[last].nx) * size_t(grids[last].ny) <= kScratchTiles)) {
+      slice.push_back(slice.back() + size_t(grids[last].nx) * size_t(grids[last].ny));
+      ++last;
     }
-
-    TileBox* out = scratch.data() + slice[k];
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        const double x0 = box.min.x + i * tx, x1 = i + 1 == nx ? box.max.x : x0 + tx;
-        const double y0 = box.min.y + j * ty, y1 = j + 1 == ny ? box.max.y : y0 + ty;
-        const double cx[4] = {x0, x1, x0, x1}, cy[4] = {y0, y0, y1, y1};
-        bool disjoint = false;
-        for (int d = 0; d < kDirs && !disjoint; ++d) {
-          double lo = HUGE_VAL;
-          for (int c = 0; c < 4; ++c) lo = std::min(lo, dirs[d].x * cx[c] + dirs[d].y * cy[c]);
-          disjoint = lo > footprint[d] + 1e-9;
-        }
-        if (disjoint) continue;
-
-        double lower = box.min.z;
-        TileBox t;
-        t.planes = 0;
-        const double sx[5] = {0.5 * (x0 + x1), x0, x1, x0, x1};
-        const double sy[5] = {0.5 * (y0 + y1), y0, y0, y1, y1};
-        for (int s = 0; s < kSamplesPerTile; ++s) {
-          const LowestPoint lp = seg.planeHint(sx[s], sy[s]);
-          ++evalsPerSegment[k];
-          TilePlane plane;
-          if (!planeFrom(seg, lp, sx[s], sy[s], plane)) continue;
-          t.plane[t.planes++] = plane;
-          double planeMin = HUGE_VAL;
-          for (int c = 0; c < 4; ++c)
-            planeMin = std::min(planeMin, plane.a + plane.b * cx[c] + plane.c * cy[c]);
-          lower = std::max(lower, planeMin);
-        }
-        if (lower >= stockTop) continue;  // the whole tile stays above the stock
-        t.lower[0] = roundDown(x0), t.lower[1] = roundDown(y0), t.lower[2] = roundDown(lower);
-        t.upper[0] = roundUp(x1), t.upper[1] = roundUp(y1);
-        t.upper[2] = std::max(t.lower[2], roundUp(std::min(box.max.z, stockTop)));
-        t.segment = uint32_t(k);
-        out[kept[k]++] = t;
-      }
+    const size_t n = last - first;
+    if (scratch.size() < slice.back()) scratch.resize(slice.back());
+    kept.assign(n, 0);
+    evalsPerSegment.assign(n, 0);
+    tbb::parallel_for(size_t(0), n, [&](size_t b) {
+      const size_t k = first + b;
+      kept[b] = boundSegmentTiles(segments[k], uint32_t(k), grids[k], stockTop,
+                                  scratch.data() + slice[b], evalsPerSegment[b]);
+    });
+    // Appended in segment order so the scene is the same whatever the threads did: each
+    // segment's tiles go to their offset, copied in parallel (a serial append, growing
+    // the vector as it went, was a third of B3's scene build).
+    offset.assign(n + 1, tiles.size());
+    for (size_t b = 0; b < n; ++b) {
+      offset[b + 1] = offset[b] + kept[b];
+      stats.boundEvaluations += evalsPerSegment[b];
     }
-  });
-  // Concatenate in segment order so the scene is the same whatever the threads did: each
-  // segment's tiles go to their offset in one vector sized once, copied in parallel (a
-  // serial append, growing the vector as it went, was a third of B3's scene build).
-  std::vector<size_t> offset(segments.size() + 1, 0);
-  for (size_t k = 0; k < segments.size(); ++k) {
-    offset[k + 1] = offset[k] + kept[k];
-    stats.boundEvaluations += evalsPerSegment[k];
+    tiles.resize(offset.back());
+    tbb::parallel_for(size_t(0), n, [&](size_t b) {
+      std::copy(scratch.begin() + std::ptrdiff_t(slice[b]),
+                scratch.begin() + std::ptrdiff_t(slice[b] + kept[b]),
+                tiles.begin() + std::ptrdiff_t(offset[b]));
+    });
+    first = last;
   }
-  tiles.resize(offset.back());
-  tbb::parallel_for(size_t(0), segments.size(), [&](size_t k) {
-    std::copy(scratch.begin() + std::ptrdiff_t(slice[k]),
-              scratch.begin() + std::ptrdiff_t(slice[k] + kept[k]),
-              tiles.begin() + std::ptrdiff_t(offset[k]));
-  });
   stats.tiles = tiles.size();
 }
 
@@ -226,6 +288,7 @@ void SweptScene::Impl::buildEmbree() {
   device = rtcNewDevice(nullptr);
   if (!device) throw std::runtime_error("Embree: cannot create a device");
   rtcSetDeviceErrorFunction(device, deviceError, &lastError);
+  rtcSetDeviceMemoryMonitorFunction(device, embreeMemory, &embreeBytes);
   scene = rtcNewScene(device);
   // Robust traversal: a vertical ray exactly on a box face must not slip through.
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
@@ -258,8 +321,14 @@ SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& opti
   impl_->grid = std::make_unique<TileGrid>();
   impl_->grid->build(impl_->tiles, options.regionHalfSize);
   impl_->buildEmbree();
-  impl_->stats.buildSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  SceneStats& stats = impl_->stats;
+  for (const SweptMove& s : impl_->segments)
+    stats.moveBytes += SweptMove::bytesPerMove(s.turning(), s.teeth() != nullptr);
+  // The tiles kept (their storage's capacity past them is never touched).
+  stats.tileBytes = impl_->tiles.size() * sizeof(TileBox);
+  stats.gridBytes = impl_->grid->bytes();
+  stats.embreeBytes = size_t(std::max<int64_t>(0, impl_->embreeBytes.load()));
+  stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 SweptScene::~SweptScene() {

@@ -32,12 +32,26 @@ struct SceneOptions {
   // The knot spacing (mm) given to every turning move (SweptMove::setContactKnotSpacing;
   // 0: none); negative leaves the moves' own.
   double contactKnotSpacing = -1;
+  // The grid's cells per cutting move of the program that reaches them
+  // (programCellsPerMove, raycast/simulation.h; HUGE_VAL: unknown). Below
+  // kCellsPerMoveForTiles every move is one culling tile (cullingTileSide).
+  double cellsPerMove = HUGE_VAL;
 };
 
+// Programs with fewer cells than this per move get one culling tile a move. A tile costs
+// the build 5 exact evaluations and its share of the tile grid and of Embree's hierarchy
+// (~1 KB in all); finer tiles pay back only through the cells they cull for, ~4 exact
+// evaluations a cell shared by every move over it. Measured on B9 (callgrind, 4 mm, 6
+// cells a move): one tile a move instead of ~19 builds in 133 instead of 633 million
+// instructions and casts in 75 instead of 71, the same heights; B3 and B4 (4 300 and
+// 490 cells a move full size, ~460 and 101 at the performance guard's areas) keep theirs.
+constexpr double kCellsPerMoveForTiles = 64;
+
 // The side (mm) of the culling tiles of a segment whose xy box has the given area
-// (mm^2): SceneOptions::tileSize if set, else max(R / 8, sqrt(area / N)) with N = 16
-// tiles for moves shorter than the cutter radius R and 64 otherwise. The memory estimate
-// (estimateSceneBytes, raycast/simulation.h) uses the same rule.
+// (mm^2): SceneOptions::tileSize if set; else, in a program of fewer than
+// kCellsPerMoveForTiles cells a move, HUGE_VAL (one tile); else max(R / 8, sqrt(area /
+// N)) with N = 16 tiles for moves shorter than the cutter radius R and 64 otherwise.
+// The memory estimate (estimateSceneBytes, raycast/simulation.h) uses the same rule.
 double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
                        const SceneOptions& options);
 
@@ -46,6 +60,11 @@ struct SceneStats {
   size_t tiles = 0;             // Embree primitives
   size_t boundEvaluations = 0;  // exact evaluations spent on building the bounds
   double buildSeconds = 0;
+  // The scene's own accounting of what it holds once built, bytes: the moves (the
+  // SweptMove objects and what they own, SweptMove::bytesPerMove), the culling tiles,
+  // the tile grid, and Embree's allocations (its memory monitor, net of frees).
+  size_t moveBytes = 0, tileBytes = 0, gridBytes = 0, embreeBytes = 0;
+  size_t bytes() const { return moveBytes + tileBytes + gridBytes + embreeBytes; }
 };
 
 class SweptScene {

@@ -34,6 +34,11 @@ class TileGrid {
   // regionHalfSize (mm).
   void build(const TileStorage& tiles, double regionHalfSize);
 
+  // Bytes the grid holds (its buckets and entries).
+  size_t bytes() const {
+    return first_.capacity() * sizeof(uint64_t) + entries_.capacity() * sizeof(Entry);
+  }
+
   // Calls visit(tile) for every tile whose grown box holds (x, y) and whose bound over
   // the bucket of (x, y) is below zTop, in ascending order of that bound.
   template <class Visit>

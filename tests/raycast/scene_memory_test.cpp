@@ -47,7 +47,7 @@ TEST(SceneMemory, EstimateIsAtLeastWhatTheSceneTakes) {
   const ToolPath path = turningPath(100);  // 40,000 turning moves
   const Box3 stock({0, 0, -2}, {20, 50, 1});
   size_t moves = 0;
-  const double estimate = estimateSceneBytes(cutter, path, stock.max.z, &moves);
+  const double estimate = estimateSceneBytes(cutter, path, stock, 0.01, &moves);
   ASSERT_EQ(moves, 40000u);
   // In a child process, so that the peak resident size measures this build alone.
   const pid_t pid = fork();
@@ -65,6 +65,69 @@ TEST(SceneMemory, EstimateIsAtLeastWhatTheSceneTakes) {
   int status = 0;
   waitpid(pid, &status, 0);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "estimate " << estimate;
+}
+
+long residentKb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  long kb = -1;
+  while (std::getline(in, line))
+    if (line.rfind("VmRSS:", 0) == 0) kb = std::stol(line.substr(6));
+  return kb;
+}
+
+// Issue 37's kind of program, 10^5 moves: a ball R1 finishing 3-axis passes 0.1 mm apart
+// along X, a move every 0.05 mm with the tip on a wavy surface (no two consecutive moves
+// collinear, so none merge), on a 0.02 mm grid: 12.5 cells a move, one culling tile each.
+ToolPath finishingPath(int passes, int movesPerPass) {
+  auto tip = [](double x, double y) {
+    return Vec3{x, y, 0.3 * std::sin(x / 3) * std::sin(y / 4 + 0.5) - 0.5};
+  };
+  ToolPath path;
+  for (int k = 0; k < passes; ++k)
+    for (int i = 0; i < movesPerPass; ++i) {
+      const double y = 0.1 * k;
+      path.moves.push_back(
+          Move{Pose{tip(0.05 * i, y), {0, 0, 1}}, Pose{tip(0.05 * (i + 1), y), {0, 0, 1}}, false});
+    }
+  return path;
+}
+
+// The scene of 10^5 short moves holds what docs/performance.md states a move (the
+// estimate, estimateSceneBytes) within 20 %: by its own accounting (SceneStats) and by
+// the resident memory it adds once built.
+TEST(SceneMemory, ShortMovesTakeTheStatedBytesAMove) {
+#if SCALLOP_UNDER_ASAN
+  GTEST_SKIP() << "resident memory is not meaningful under AddressSanitizer";
+#endif
+  const Cutter cutter = Cutter::make(CutterType::Ball, 1);
+  const ToolPath path = finishingPath(100, 1000);
+  const Box3 stock({0, 0, -5}, {50, 10, 0});
+  const double spacing = 0.02;
+  ASSERT_LT(programCellsPerMove(cutter, path, stock, spacing), kCellsPerMoveForTiles);
+  size_t moves = 0;
+  const double stated = estimateSceneBytes(cutter, path, stock, spacing, &moves);
+  ASSERT_EQ(moves, 100000u);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const long before = residentKb();
+    const std::unique_ptr<SweptScene> scene = buildScene(cutter, path, stock, spacing);
+    const double resident = double(residentKb() - before) * 1024;
+    const double counted = double(scene->stats().bytes());
+    std::fprintf(stderr,
+                 "scene of %zu short moves (%zu segments, %zu tiles): %.0f bytes a move "
+                 "stated, %.0f counted by the scene, %.0f resident\n",
+                 moves, scene->stats().segments, scene->stats().tiles, stated / double(moves),
+                 counted / double(moves), resident / double(moves));
+    const auto within = [&](double measured) {
+      return std::fabs(measured - stated) <= 0.2 * stated;
+    };
+    _exit(scene->stats().segments == moves && within(counted) && within(resident) ? 0 : 1);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "stated " << stated;
 }
 
 }  // namespace

@@ -31,6 +31,15 @@ void printTable(std::FILE* out, const json& doc) {
                  c["evals_per_cell"].get<double>(), c["seconds"].get<double>(),
                  c["mcells_per_s"].get<double>(), c["peak_rss_mb"].get<double>(), speedup.c_str());
   }
+  // The scene: build time against the cast's, moves a second, bytes a move (issue 37).
+  std::fprintf(out, "\n%-4s %9s %9s %12s %12s %14s\n", "case", "scene s", "cast s", "moves/s",
+               "scene B/move", "peak-map B/mv");
+  for (const json& c : doc["cases"])
+    std::fprintf(out, "%-4s %9.3f %9.3f %12.0f %12.0f %14.0f\n",
+                 c["name"].get<std::string>().c_str(), c["scene_seconds"].get<double>(),
+                 c["cast_seconds"].get<double>(), c["scene_moves_per_s"].get<double>(),
+                 c["scene_bytes_per_move"].get<double>(),
+                 c["peak_beyond_map_bytes_per_move"].get<double>());
   bool teeth = false;
   for (const json& c : doc["cases"]) teeth = teeth || c.contains("teeth_over_envelope");
   if (teeth) {
@@ -84,7 +93,10 @@ constexpr const char* kBenchHelp =
     "  B4 the mount_rush ball R3 drop-cutter raster (OpenCAMLib, tests/data), 86 x 43.5 mm\n"
     "     at 0.01 mm (3.7e7 cells);\n"
     "  B5 B1 with the teeth cutting model (2 flutes, fz 0.1 mm; --quick: a 4 mm square),\n"
-    "     beside the envelope on the same grid (B1's raster) and the ratio of the times.\n"
+    "     beside the envelope on the same grid (B1's raster) and the ratio of the times;\n"
+    "  B9 (only with --case B9) 10^6 moves: ball R1 finishing G-code over 100 x 50 mm\n"
+    "     (--area A: A x A/2), passes 0.1 mm apart, a point every 0.05 mm, 20 um; reports\n"
+    "     the scene's build in moves/s and its bytes a move.\n"
     "Each case runs through simulate() at 1 thread and at --threads (default 2), twice\n"
     "each (alternating; the faster run counts), and reports cells, moves, exact\n"
     "evaluations per cell, seconds, Mcells/s, peak memory and the 2-vs-1-thread\n"
@@ -105,8 +117,8 @@ Command addBenchCommand(CLI::App& parent, CommonOptions& common) {
   app->add_flag("--json", *json, "Print one JSON document on stdout (and nothing else there)");
   app->add_flag("--quick", args->quick, "10x coarser grid spacing (10 um and 20 um): CI-friendly");
   app->add_option("--case", args->cases,
-                  "Run only this case (B1, B2, B3, B3c, B4, B5); may be repeated")
-      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4", "B5"}));
+                  "Run only this case (B1, B2, B3, B3c, B4, B5, B9); may be repeated")
+      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4", "B5", "B9"}));
   app->add_option("--area", args->area, "Square stock of this side, mm, instead of 20 mm")
       ->check(CLI::PositiveNumber);
   app->add_option("--stamp-window", args->stampWindow,

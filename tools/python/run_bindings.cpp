@@ -165,8 +165,9 @@ void bindRuns(py::module_& m) {
         py::arg("threads") = py::none(), py::arg("progress") = py::none(),
         "bench(cases=None, *, quick=False, area=None, stamp_window=None, stamp=True,\n"
         "      threads=None, progress=None) -> dict\n\n"
-        "The standard performance cases (a list of 'B1', 'B2', 'B3', 'B3c', 'B4', 'B5';\n"
-        "None: all), each run at 1 thread and at `threads` (None: 2), and the stamping\n"
+        "The standard performance cases (a list of 'B1', 'B2', 'B3', 'B3c', 'B4', 'B5',\n"
+        "'B9'; None: all but B9, a million moves), each run at 1 thread and at `threads` (None: "
+        "2), and the stamping\n"
         "baseline (stamp=False skips it): the document `scallop bench --json` prints.\n"
         "quick: 10x coarser grids; area: a square stock of this side, mm; stamp_window:\n"
         "the baseline's window side, mm. progress(done, total) in cells is called for\n"

@@ -3,19 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 #include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/raster.h"
 #include "sweep/swept_segment.h"
+#include "tools/io/gcode_reader.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
 
 namespace {
 
-constexpr double kStockSide = 20;      // mm, the standard cases' stock
-constexpr double kQuickTeethSide = 4;  // mm, B5's stock with --quick
+constexpr double kStockSide = 20;        // mm, the standard cases' stock
+constexpr double kQuickTeethSide = 4;    // mm, B5's stock with --quick
+constexpr double kFinishingWidth = 100;  // mm, B9's stock (x; y is half of it)
 
 RasterSpec b1Raster() {
   RasterSpec spec;
@@ -29,8 +32,43 @@ RasterSpec b1Raster() {
 }  // namespace
 
 const std::vector<std::string>& benchCaseNames() {
+  static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4", "B5", "B9"};
+  return names;
+}
+
+const std::vector<std::string>& defaultBenchCaseNames() {
   static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4", "B5"};
   return names;
+}
+
+double finishingHeight(double x, double y) {
+  return 0.3 * std::sin(x / 3) * std::sin(y / 4) - 0.5;
+}
+
+std::string finishingGcode(const Cutter& cutter, const Box3& stock, double passGap,
+                           double pointGap) {
+  // The passes' extent and points as B3's (freeformPasses), written as a CAM post would:
+  // 4 decimals, one G1 a point, a rapid over the stock between passes.
+  const double x0 = stock.min.x - cutter.radius - 1, x1 = stock.max.x + cutter.radius + 1;
+  const int points = std::max(1, int(std::ceil((x1 - x0) / pointGap - 1e-9))) + 1;
+  const int passes = int(std::floor((stock.max.y - stock.min.y) / passGap + 1e-9)) + 1;
+  const double clear = stock.max.z + 5;
+  std::string text = "(scallop bench B9: 3-axis ball finishing, passes along X)\nG21 G90 G17\n";
+  text.reserve(size_t(passes) * size_t(points) * 34);
+  char line[96];
+  for (int k = 0; k < passes; ++k) {
+    const double y = stock.min.y + k * passGap;
+    std::snprintf(line, sizeof line, "G0 Z%.4f\nG0 X%.4f Y%.4f\nG0 Z%.4f\n", clear, x0, y,
+                  finishingHeight(x0, y) + 1);
+    text += line;
+    for (int i = 0; i < points; ++i) {
+      const double x = x0 + (x1 - x0) * double(i) / double(points - 1);
+      std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f Z%.4f\n", x, y, finishingHeight(x, y));
+      text += line;
+    }
+  }
+  text += "G0 Z" + std::to_string(clear) + "\nM30\n";
+  return text;
 }
 
 double freeformHeight(double x, double y) {
@@ -166,8 +204,23 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
     b.grid =
         gridCovering(b.stock.min.x, b.stock.min.y, b.stock.max.x, b.stock.max.y, 0.01 * coarse);
     b.description = "mount_rush ball R3 drop-cutter raster (OpenCAMLib), 3-axis CAM output";
+  } else if (name == "B9") {
+    // A 100 x 50 mm freeform part (--area A: A x A/2) finished with a ball R1: about 10^6
+    // G1 lines, read through the G-code reader as a user's file would be (the reading is
+    // not timed: it happens here, before simulate()).
+    const double width = options.area > 0 ? options.area : kFinishingWidth;
+    b.cutter = Cutter::make(CutterType::Ball, 1);
+    b.stock.extend({0, 0, -5});
+    b.stock.extend({width, 0.5 * width, 0});
+    std::istringstream in(finishingGcode(b.cutter, b.stock, 0.1, 0.05));
+    ToolPathFile file;
+    readGcode(in, "B9 G-code", PathFileOptions(), file);
+    b.path = std::move(file.path);
+    b.grid = gridCovering(0, 0, width, 0.5 * width, 0.02 * coarse);
+    b.description = "ball R1 finishing G-code, passes 0.1 mm apart, a point every 0.05 mm";
   } else {
-    throw InputError("--case", "unknown case \"" + name + "\"; expected B1, B2, B3, B3c, B4 or B5");
+    throw InputError("--case",
+                     "unknown case \"" + name + "\"; expected B1, B2, B3, B3c, B4, B5 or B9");
   }
   return b;
 }

@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "base/vec3.h"
 #include "raycast/zmap.h"
 #include "sweep/cutter.h"
 #include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/tool_path_sweep.h"
-#include "base/vec3.h"
 
 namespace scallop {
 
@@ -30,8 +30,11 @@ struct BenchCaseOptions {
   double area = 0;     // > 0: a square stock of this side, mm, instead of 20 x 20 mm
 };
 
-// "B1", "B2", "B3", "B3c", "B4", "B5" in the order they are reported.
+// "B1", "B2", "B3", "B3c", "B4", "B5", "B9" in the order they are reported.
 const std::vector<std::string>& benchCaseNames();
+// The cases a bench without --case runs: all but B9 (10^6 moves; minutes and gigabytes
+// at any grid spacing, so it runs only when asked for).
+const std::vector<std::string>& defaultBenchCaseNames();
 
 // Throws InputError (field "--case" / "--area") for an unknown name or a bad area.
 //  B1: stock 20 x 20 mm, bull R = 3, r = 1, lead 5 deg, step-over 0.8 mm, depth 0.5 mm,
@@ -47,6 +50,10 @@ const std::vector<std::string>& benchCaseNames();
 //  B5: B1 with the teeth cutting model (2 flutes, fz 0.1 mm, phase 0). With `quick`
 //      its stock is a 4 mm square (or --area's, if smaller): the teeth cost about
 //      100 times the envelope a cell, and the quick bench runs in CI.
+//  B9: a program of 10^6 moves (issue 37): ball R1 finishing a 100 x 50 mm stock (--area A:
+//      A x A/2 mm), passes along X 0.1 mm apart with a point every 0.05 mm on
+//      finishingHeight, written by finishingGcode and read through the G-code reader;
+//      spacing 20 um (1.25e7 cells).
 BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options);
 
 // The freeform 5-axis finishing path of B3 and B3c: passes along +X, `passGap` mm apart
@@ -66,6 +73,14 @@ std::string freeformClText(const Cutter& cutter, const Box3& stock, double passG
 ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGap,
                           double moveLength, double leanDeg);
 double freeformHeight(double x, double y);
+
+// B9's surface, z = 0.3 sin(x / 3) sin(y / 4) - 0.5 (mm), and its program as G-code text:
+// passes along +X, `passGap` mm apart in Y over the stock, each from a cutter radius + 1
+// mm before the stock to as far past it, a G1 every `pointGap` mm with the tip on the
+// surface (4 decimals), and rapids over the stock between passes.
+double finishingHeight(double x, double y);
+std::string finishingGcode(const Cutter& cutter, const Box3& stock, double passGap,
+                           double pointGap);
 
 // The stamping baseline's window: a square of side `side` mm (at most the stock)
 // centred on the stock, with the case's grid spacing.

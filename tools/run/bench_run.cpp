@@ -185,6 +185,12 @@ json caseJson(const CaseResult& r) {
             {"moves", r.bench.path.cuttingMoves()},
             {"segments", t.scene.segments},
             {"culling_tiles", t.scene.tiles},
+            {"scene_bytes", t.scene.bytes()},
+            {"scene_bytes_detail",
+             {{"moves", t.scene.moveBytes},
+              {"tiles", t.scene.tileBytes},
+              {"grid", t.scene.gridBytes},
+              {"embree", t.scene.embreeBytes}}},
             {"evals_per_cell", t.cast.evaluationsPerCell()},
             {"seconds", t.seconds},
             {"scene_seconds", t.scene.buildSeconds},
@@ -194,6 +200,14 @@ json caseJson(const CaseResult& r) {
             {"threads", r.threads},
             {"seconds_1_thread", r.single.seconds},
             {"heights_hash", fmt::format("{:016x}", t.hash)}};
+  // Issue 37's figures: scene build in moves a second (the program's cutting moves), and
+  // bytes a move, the scene's own accounting and the peak beyond the map's heights.
+  const double moves = double(std::max<size_t>(1, r.bench.path.cuttingMoves()));
+  const double mapBytes = 8.0 * double(r.bench.grid.cells());
+  j["scene_moves_per_s"] = moves / t.scene.buildSeconds;
+  j["scene_bytes_per_move"] = double(t.scene.bytes()) / moves;
+  j["peak_beyond_map_bytes_per_move"] = (r.peakRssMb * 1048576.0 - mapBytes) / moves;
+  j["scene_over_cast"] = t.scene.buildSeconds / t.cast.seconds;
   // Only a 2-thread run has a 2-vs-1 speed-up; other counts report theirs separately.
   j["speedup_2v1"] = r.threads == 2 ? json(r.single.seconds / t.seconds) : json(nullptr);
   if (r.threads != 2 && r.threads != 1) j["speedup_vs_1"] = r.single.seconds / t.seconds;
@@ -222,7 +236,7 @@ json stampJson(const StampComparison& c) {
 }  // namespace
 
 BenchResult runBench(const BenchSettings& args) {
-  const std::vector<std::string> names = args.cases.empty() ? benchCaseNames() : args.cases;
+  const std::vector<std::string> names = args.cases.empty() ? defaultBenchCaseNames() : args.cases;
   BenchCaseOptions caseOptions;
   caseOptions.quick = args.quick;
   caseOptions.area = args.area;

@@ -58,8 +58,10 @@ RunMemory estimateRunMemory(const Job& job, const GridSpec& grid, bool exact,
   RunMemory memory;
   memory.mapBytes = mapBytes(grid);
   if (exact)
-    memory.sceneBytes =
-        estimateSceneBytes(job.cutter, job.path, job.stockTop(), &memory.cuttingMoves, job.cutting);
+    // The same stock box the scene is built with (tiled_simulation.cpp), so the estimate
+    // chooses its culling tiles alike.
+    memory.sceneBytes = estimateSceneBytes(job.cutter, job.path, job.stock, grid.spacing,
+                                           &memory.cuttingMoves, job.cutting);
   memory.availableBytes = availableBytes;
   return memory;
 }

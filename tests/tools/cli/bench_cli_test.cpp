@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -119,6 +120,32 @@ TEST(BenchCases, FreeformPathsFollowTheSurfaceAlongX) {
     EXPECT_EQ(b.grid.spacing, 0.002);
   }
   EXPECT_EQ(makeBenchCase("B2", options).path.cuttingMoves(), 2u * 180u);
+}
+
+// B9 is issue 37's finishing program read back through the G-code reader: ball R1,
+// passes along X 0.1 mm apart over an A x A/2 stock, a plunge and then a G1 every 0.05
+// mm with the tip on the surface (to the text's 4 decimals), on a 20 um grid; only run
+// when asked for.
+TEST(BenchCases, FinishingProgramIsReadFromGcode) {
+  BenchCaseOptions options;
+  options.area = 1;
+  const BenchCase b = makeBenchCase("B9", options);
+  EXPECT_EQ(b.cutter.type, CutterType::Ball);
+  EXPECT_EQ(b.cutter.radius, 1);
+  EXPECT_EQ(b.stock.max.x, 1);
+  EXPECT_EQ(b.stock.max.y, 0.5);
+  EXPECT_EQ(b.grid.spacing, 0.02);
+  // 6 passes (y = 0 .. 0.5) of x from -2 to 3: 100 moves and the plunge each.
+  EXPECT_EQ(b.path.cuttingMoves(), 6u * 101u);
+  size_t alongX = 0;
+  for (const Move& mv : b.path.moves) {
+    if (mv.rapid) continue;
+    EXPECT_NEAR(mv.to.tip.z, finishingHeight(mv.to.tip.x, mv.to.tip.y), 5.1e-5);
+    alongX += mv.from.tip.x != mv.to.tip.x;
+  }
+  EXPECT_EQ(alongX, 6u * 100u);
+  const std::vector<std::string>& all = defaultBenchCaseNames();
+  EXPECT_EQ(std::find(all.begin(), all.end(), "B9"), all.end());
 }
 
 }  // namespace
