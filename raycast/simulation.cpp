@@ -44,10 +44,18 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, double sto
     // k >= 0 never leans more than its ends).
     const auto lean = [](const Vec3& a) { return std::hypot(a.x, a.y) / length(a); };
     const double reach = 2 * (R + flute * std::fmax(lean(m.from.axis), lean(m.to.axis)));
-    const double w = std::fabs(m.to.tip.x - m.from.tip.x) + reach;
-    const double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
-    const double T = cullingTileSide(R, length(m.to.tip - m.from.tip), w * h, SceneOptions());
-    const bool turning = PoseCurve::turns(m.from.axis, m.to.axis);
+    double w = std::fabs(m.to.tip.x - m.from.tip.x) + reach;
+    double h = std::fabs(m.to.tip.y - m.from.tip.y) + reach;
+    double len = length(m.to.tip - m.from.tip);
+    const bool arc = m.arc > 0 && m.arc <= path.arcs.size();
+    if (arc) {
+      const Box3 tips = path.arcs[m.arc - 1].bounds();
+      w = tips.max.x - tips.min.x + reach;
+      h = tips.max.y - tips.min.y + reach;
+      len = PoseCurve::ofMove(path, m).pathLength();
+    }
+    const double T = cullingTileSide(R, len, w * h, SceneOptions());
+    const bool turning = arc || PoseCurve::turns(m.from.axis, m.to.axis);
     need += double(SweptMove::bytesPerMove(turning, cutting.teeth())) +
             kBytesPerTile * std::ceil(w / T) * std::ceil(h / T);
     ++counted;

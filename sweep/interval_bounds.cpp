@@ -8,9 +8,10 @@
 //      h_t(N) = max over K(t) of N.p, every point of K(t) on l has N.p <= h_t(N), so
 //      f(t) >= (h_t(N) - N.x x - N.y y) / N.z, and H >= max over I of h_t(N) bounds f
 //      on I. A cutter point k (tip at the origin) follows g(t) = N.(tip(t) + R(t) k)
-//      with tip linear and |R''k| <= omega^2 |k|, so g lies below its chord plus
-//      omega^2 |k| w^2 / 8 (interpolation error of a function with bounded second
-//      derivative):  H = max(h_ta(N), h_tb(N)) + omega^2 rho w^2 / 8,  rho bounding |k|
+//      with |R''k| <= omega^2 |k| and |tip''| <= A (0 for a linear tip; an arc's
+//      constant axis has omega = 0 but A > 0), so g lies below its chord plus
+//      (omega^2 |k| + A) w^2 / 8 (interpolation error of a function with bounded second
+//      derivative):  H = max(h_ta(N), h_tb(N)) + (omega^2 rho + A) w^2 / 8, rho bounding |k|
 //      over the points that can attain the support during I: each g moves by at most
 //      V w, V = |N.(p1 - p0)| + omega reach, so those points lie in the cap
 //      N.k >= h - 2 V w of K(ta), below s_max = (|N_perp| R + 2 V w - h) / (-N.a) along
@@ -57,7 +58,7 @@ inline double supportOver(const Cutter& c, double omega, double reach, const Tip
                           const Vec3& N) {
   const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
   const double w = b.t - a.t;
-  if (omega == 0 || w <= 0) return h;
+  if ((omega == 0 && tip.accel == 0) || w <= 0) return h;
   // The cap of the points that can attain the support during the interval.
   const double V = tip.rateAlong(N) + omega * reach;
   const double u = dot(N, a.axis);

@@ -151,6 +151,7 @@ const char* defaultJobJson() {
 PathFileOptions Job::pathOptions() const {
   PathFileOptions o;
   o.blockDelete = blockDelete;
+  o.arcChords = arcChords;
   o.workOffsets = workOffsets;
   o.tools = tools;
   o.machine = machine;
@@ -231,6 +232,7 @@ Job parseJob(const std::string& textIn, const std::string& source,
     if (doc.contains("work_offsets"))
       job.workOffsets = parseWorkOffsets(requireObject(doc, "work_offsets", "work_offsets"));
     job.blockDelete = boolean(doc, "block_delete", "block_delete", false);
+    job.arcChords = boolean(doc, "arc_chords", "arc_chords", false);
     if (doc.contains("machine"))
       job.machine = parseMachine(requireObject(doc, "machine", "machine"));
     namespace fs = std::filesystem;
@@ -331,6 +333,7 @@ json jobToJson(const Job& job) {
   }
   if (!offsets.empty()) out["work_offsets"] = offsets;
   if (job.blockDelete) out["block_delete"] = true;
+  if (job.arcChords) out["arc_chords"] = true;
   if (job.machine) {
     const TableMachine& g = job.machine->geometry;
     out["machine"] = {

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "analysis/triangle_mesh.h"
+#include "base/vec3.h"
 #include "raycast/zmap.h"
 #include "sweep/cutter.h"
 #include "sweep/cutting_model.h"
 #include "sweep/pose.h"
 #include "sweep/raster.h"
-#include "base/vec3.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
@@ -39,6 +39,8 @@ struct Job {
   std::array<Vec3, 6> workOffsets{};
   // "block_delete": true skips G-code lines starting with '/'.
   bool blockDelete = false;
+  // G-code arcs as chords within 1e-4 mm (the --arc-chords baseline), not exact moves.
+  bool arcChords = false;
   // "machine": a 5-axis machine for G-code rotary words (CONVENTIONS.md "Machines").
   std::optional<MachineSpec> machine;
   Box3 stock;
