@@ -173,6 +173,8 @@ PoseCurve PoseCurve::arc(const ArcMotion& arc, const Vec3& axis) {
   const double s = std::fabs(arc.sweep), d = std::fabs(arc.radius1 - arc.radius0);
   const double rho = std::fmax(arc.radius0, arc.radius1), keep = 1 + 1e-12;
   c.arcSpeed_ = std::sqrt(d * d + rho * rho * s * s + arc.rise * arc.rise) * keep;
+  c.arcPlaneSpeed_ = std::sqrt(d * d + rho * rho * s * s) * keep;
+  c.arcNormal_ = cross(arc.u, arc.v);
   c.tipAccel_ = std::sqrt(4 * d * d * s * s + rho * rho * s * s * s * s) * keep;
   c.tipJerk_ = std::sqrt(9 * d * d * s * s * s * s + rho * rho * s * s * s * s * s * s) * keep;
   return c;
@@ -215,6 +217,24 @@ double PoseCurve::tipSpeedBound() const {
   if (linearTip()) return length(tip1_ - tip0_);
   if (kind_ == Kind::Arc) return arcSpeed_;
   return std::max(length(tipVelocity(0)), length(tipVelocity(1))) + 0.5 * tipAccel_;
+}
+
+double PoseCurve::arcAcross(const Vec3& N) const {
+  const double along = dot(N, arcNormal_);
+  return std::sqrt(std::max(0.0, dot(N, N) - along * along)) * (1 + 1e-12);
+}
+
+double PoseCurve::tipRateAlong(const Vec3& N) const {
+  if (kind_ != Kind::Arc) return linearTip() ? std::fabs(dot(N, tip1_ - tip0_)) : tipSpeedBound();
+  return (std::fabs(dot(N, arcNormal_) * arc_->rise) + arcAcross(N) * arcPlaneSpeed_) * (1 + 1e-12);
+}
+
+double PoseCurve::tipAccelAlong(const Vec3& N) const {
+  return kind_ == Kind::Arc ? arcAcross(N) * tipAccel_ : tipAccel_;
+}
+
+double PoseCurve::tipJerkAlong(const Vec3& N) const {
+  return kind_ == Kind::Arc ? arcAcross(N) * tipJerk_ : tipJerk_;
 }
 
 double PoseCurve::pathLength() const {

@@ -103,6 +103,15 @@ class PoseCurve {
   // t^2, t^3): 0 for the kinds whose tip is linear.
   double tipAccelBound() const { return tipAccel_; }
   double tipJerkBound() const { return tipJerk_; }
+  // For a unit direction N, bounds over [0, 1] of |N . tip'|, |N . tip''| and
+  // |N . tip'''|: those of the tip's speed, acceleration and jerk, except on an arc,
+  // whose tip'' and tip''' lie in its plane and whose tip' leaves it by the rise alone:
+  // there |N . tip^(k)| <= |N across the normal| times the in-plane bound (k = 2, 3),
+  // and |N . tip'| <= |N . n| |rise| + |N across n| sqrt(d^2 + rho_max^2 s^2). (On a
+  // horizontal circle a plane of normal z sees no acceleration at all.)
+  double tipRateAlong(const Vec3& N) const;
+  double tipAccelAlong(const Vec3& N) const;
+  double tipJerkAlong(const Vec3& N) const;
   // A proven bound over [0, 1] of |d tip / dt| (mm per unit t): |p1 - p0| for the kinds
   // whose tip is linear; on a curve |tip'(t)| <= |tip'(end)| + A |t - end| for the
   // nearer end, at most the larger end speed plus A / 2.
@@ -173,7 +182,10 @@ class PoseCurve {
   // Arc: the tip's circle or helix, shared (a pointer keeps the other kinds' moves
   // small: a scene holds one curve per move).
   std::shared_ptr<const ArcMotion> arc_;
-  double arcSpeed_ = 0;  // Arc: >= |tip'| over the move, mm per unit t
+  double arcSpeed_ = 0;       // Arc: >= |tip'| over the move, mm per unit t
+  double arcPlaneSpeed_ = 0;  // Arc: >= |tip' - rise n|, mm per unit t
+  Vec3 arcNormal_;            // Arc: n = u x v
+  double arcAcross(const Vec3& N) const;
 };
 
 }  // namespace scallop

@@ -211,7 +211,7 @@ Job parseJob(const std::string& textIn, const std::string& source,
                        "tolerance; remove \"sweep\" from the job");
     rejectUnknownKeys(doc,
                       {"tool", "tools", "cutting", "stock", "grid", "path", "design",
-                       "work_offsets", "block_delete", "machine"},
+                       "work_offsets", "block_delete", "arc_chords", "machine"},
                       "");
     Job job;
     job.source = source;

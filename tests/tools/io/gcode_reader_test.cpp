@@ -111,7 +111,7 @@ TEST(GcodeReader, ArcsAreSingleExactMovesInEveryPlaneAndForm) {
   const ToolPathFile f = parse(
       "G0 X1 Y0 Z0\nG3 X0 Y1 R1\nG0 X1 Y0\nG3 X0 Y1 R-1\nG0 X5 Y0 Z-1\nG2 X5 Y0 I-5 J0\n"
       "G18\nG0 X2 Y0 Z0\nG2 X-2 Y2 Z0 I-2 K0\nG19\nG0 X0 Y0 Z3\nG3 X-1 Y0 Z-3 J0 K-3\n");
-  ASSERT_EQ(f.path.arcs.size(), 6u);
+  ASSERT_EQ(f.path.arcs.size(), 5u);
   expectArc(f, 0, {0, 0, 0}, 1, 0, kPi / 2, 0);
   expectArc(f, 2, {1, 1, 0}, 1, -kPi / 2, 1.5 * kPi, 0);
   expectArc(f, 4, {0, 0, -1}, 5, 0, -2 * kPi, 0);  // G2 from (5, 0): clockwise, whole
