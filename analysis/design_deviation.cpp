@@ -96,8 +96,7 @@ struct MoveFinder::Impl {
   }
 };
 
-MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path,
-                       const std::vector<Box3>& areas)
+MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path, const std::vector<Box3>& areas)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.moveToSlot.assign(path.moves.size(), -1);
@@ -129,10 +128,11 @@ MoveFinder::MoveFinder(const Cutter& cutter, const ToolPath& path,
     const double lean = std::max(std::hypot(mv.from.axis.x, mv.from.axis.y),
                                  std::hypot(mv.to.axis.x, mv.to.axis.y));
     const double reach = cutter.radius + cutter.fluteLength * lean;
-    const double lx = std::min(mv.from.tip.x, mv.to.tip.x) - reach;
-    const double hx = std::max(mv.from.tip.x, mv.to.tip.x) + reach;
-    const double ly = std::min(mv.from.tip.y, mv.to.tip.y) - reach;
-    const double hy = std::max(mv.from.tip.y, mv.to.tip.y) + reach;
+    Box3 tips;
+    tips.extend(mv.from.tip), tips.extend(mv.to.tip);
+    if (mv.arc > 0 && mv.arc <= path.arcs.size()) tips = path.arcs[mv.arc - 1].bounds();
+    const double lx = tips.min.x - reach, hx = tips.max.x + reach;
+    const double ly = tips.min.y - reach, hy = tips.max.y + reach;
     if (hx < all.min.x || lx > all.max.x || hy < all.min.y || ly > all.max.y) continue;
     bool near = false;
     for (int64_t j = m.clampY(ly); j <= m.clampY(hy) && !near; ++j)

@@ -37,16 +37,25 @@ namespace {
 struct MoveReach {
   double x0, y0, x1, y1;
 };
-MoveReach moveReach(const Move& m, double R, double flute) {
+// The box of a move's tips: its ends, or the whole arc's (path.arcs) for an arc.
+Box3 tipsBox(const ToolPath& path, const Move& m) {
+  if (m.arc > 0 && m.arc <= path.arcs.size()) return path.arcs[m.arc - 1].bounds();
+  Box3 tips;
+  tips.extend(m.from.tip);
+  tips.extend(m.to.tip);
+  return tips;
+}
+
+MoveReach moveReach(const ToolPath& path, const Move& m, double R, double flute) {
   const auto lean = [](const Vec3& a) { return std::hypot(a.x, a.y) / length(a); };
   const double reach = R + flute * std::fmax(lean(m.from.axis), lean(m.to.axis));
-  return {std::fmin(m.from.tip.x, m.to.tip.x) - reach, std::fmin(m.from.tip.y, m.to.tip.y) - reach,
-          std::fmax(m.from.tip.x, m.to.tip.x) + reach, std::fmax(m.from.tip.y, m.to.tip.y) + reach};
+  const Box3 tips = tipsBox(path, m);
+  return {tips.min.x - reach, tips.min.y - reach, tips.max.x + reach, tips.max.y + reach};
 }
 
 // A move that can cut: not a rapid, and its lowest tip within R + flute of the stock top.
-bool mayCut(const Move& m, double R, double flute, double stockTop) {
-  return !m.rapid && std::fmin(m.from.tip.z, m.to.tip.z) - R - flute < stockTop;
+bool mayCut(const ToolPath& path, const Move& m, double R, double flute, double stockTop) {
+  return !m.rapid && tipsBox(path, m).min.z - R - flute < stockTop;
 }
 
 }  // namespace
@@ -56,8 +65,8 @@ double programCellsPerMove(const Cutter& cutter, const ToolPath& path, const Box
   const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
   size_t reaching = 0;
   for (const Move& m : path.moves) {
-    if (!mayCut(m, R, flute, stock.max.z)) continue;
-    const MoveReach r = moveReach(m, R, flute);
+    if (!mayCut(path, m, R, flute, stock.max.z)) continue;
+    const MoveReach r = moveReach(path, m, R, flute);
     reaching +=
         r.x1 >= stock.min.x && r.x0 <= stock.max.x && r.y1 >= stock.min.y && r.y0 <= stock.max.y;
   }
@@ -79,11 +88,14 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3
   double need = 0;
   size_t counted = 0;
   for (const Move& m : path.moves) {
-    if (!mayCut(m, R, flute, stock.max.z)) continue;
-    const MoveReach r = moveReach(m, R, flute);
+    if (!mayCut(path, m, R, flute, stock.max.z)) continue;
+    const MoveReach r = moveReach(path, m, R, flute);
     const double w = r.x1 - r.x0, h = r.y1 - r.y0;
-    const double T = cullingTileSide(R, length(m.to.tip - m.from.tip), w * h, tiling);
-    const bool turning = PoseCurve::turns(m.from.axis, m.to.axis);
+    const bool arc = m.arc > 0 && m.arc <= path.arcs.size();
+    const double len =
+        arc ? PoseCurve::ofMove(path, m).pathLength() : length(m.to.tip - m.from.tip);
+    const double T = cullingTileSide(R, len, w * h, tiling);
+    const bool turning = arc || PoseCurve::turns(m.from.axis, m.to.axis);
     need += double(SweptMove::bytesPerMove(turning, cutting.teeth())) +
             kBytesPerTile * std::fmax(1, std::ceil(w / T)) * std::fmax(1, std::ceil(h / T));
     ++counted;

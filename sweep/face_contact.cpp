@@ -89,7 +89,7 @@ FaceHeight faceHeight(const PoseFrame& f, double x, double y) {
 // Step 3: whether the whole move stays above Q = (x, y, zQ) by the tip planes.
 bool tipPlanesClear(const PoseCurve& curve, const PoseFrame& f, double x, double y, double zQ) {
   const double omega = curve.turnRate();
-  const double S = curve.tipSpeedBound(), A = curve.tipAccelBound(), J = curve.tipJerkBound();
+  const double S = curve.tipSpeedBound(), A = curve.tipAccelBound();
   const double w = std::max(f.t, 1 - f.t);
   if (!(f.axis.z - omega * w > 0)) return false;
   double D = 0;  // >= |Q - tip(t)| over the move
@@ -102,7 +102,9 @@ bool tipPlanesClear(const PoseCurve& curve, const PoseFrame& f, double x, double
   const Vec3 u = Vec3{x, y, zQ} - f.tip;
   const double G0 = dot(a, u);
   const double G1 = dot(a1, u) - dot(a, f.velocity);
-  const double G3 = omega * omega * omega * D + 3 * omega * omega * S + 3 * omega * A + J;
+  // J along the axis: the same J except on an arc (constant axis, tip''' in its plane).
+  const double G3 =
+      omega * omega * omega * D + 3 * omega * omega * S + 3 * omega * A + curve.tipJerkAlong(a);
   const double M = dot(a2, u) - 2 * dot(a1, f.velocity) - dot(a, f.acceleration) + G3 * w;
   const double lo = -f.t, hi = 1 - f.t;
   auto P = [&](double tau) { return G0 + G1 * tau + 0.5 * M * tau * tau; };

@@ -8,9 +8,10 @@
 //      h_t(N) = max over K(t) of N.p, every point of K(t) on l has N.p <= h_t(N), so
 //      f(t) >= (h_t(N) - N.x x - N.y y) / N.z, and H >= max over I of h_t(N) bounds f
 //      on I. A cutter point k (tip at the origin) follows g(t) = N.(tip(t) + R(t) k)
-//      with tip linear and |R''k| <= omega^2 |k|, so g lies below its chord plus
-//      omega^2 |k| w^2 / 8 (interpolation error of a function with bounded second
-//      derivative):  H = max(h_ta(N), h_tb(N)) + omega^2 rho w^2 / 8,  rho bounding |k|
+//      with |R''k| <= omega^2 |k| and |tip''| <= A (0 for a linear tip; an arc's
+//      constant axis has omega = 0 but A > 0), so g lies below its chord plus
+//      (omega^2 |k| + A) w^2 / 8 (interpolation error of a function with bounded second
+//      derivative):  H = max(h_ta(N), h_tb(N)) + (omega^2 rho + A) w^2 / 8, rho bounding |k|
 //      over the points that can attain the support during I: each g moves by at most
 //      V w, V = |N.(p1 - p0)| + omega reach, so those points lie in the cap
 //      N.k >= h - 2 V w of K(ta), below s_max = (|N_perp| R + 2 V w - h) / (-N.a) along
@@ -48,8 +49,12 @@ namespace scallop {
 namespace {
 
 TipMotionBounds tipMotionOf(const PoseCurve& curve, double speed) {
-  return {curve.tipEnd() - curve.tipStart(), curve.linearTip(), speed, curve.tipAccelBound(),
-          curve.tipJerkBound()};
+  return {curve.tipEnd() - curve.tipStart(),
+          curve.linearTip(),
+          speed,
+          curve.tipAccelBound(),
+          curve.tipJerkBound(),
+          curve.arcTip() ? &curve : nullptr};
 }
 
 // The chord bound of step 2a: H >= max over [a.t, b.t] of h_t(N), N unit, given the
@@ -59,7 +64,8 @@ inline double supportOver(const Cutter& c, double omega, double reach, const Tip
                           const Vec3& N) {
   const double h = std::max(dot(N, a.tip) + hKa, dot(N, b.tip) + hKb);
   const double w = b.t - a.t;
-  if (omega == 0 || w <= 0) return h;
+  const double accel = tip.accelAlong(N);
+  if ((omega == 0 && accel == 0) || w <= 0) return h;
   // The cap of the points that can attain the support during the interval.
   const double V = tip.rateAlong(N) + omega * reach;
   const double u = dot(N, a.axis);
@@ -70,7 +76,7 @@ inline double supportOver(const Cutter& c, double omega, double reach, const Tip
     const double s = std::clamp(sMax, 0.0, c.fluteLength);
     rho = std::min(reach, std::sqrt(s * s + c.radius * c.radius));
   }
-  return h + (omega * omega * rho + tip.accel) * w * w / 8;
+  return h + (omega * omega * rho + accel) * w * w / 8;
 }
 
 }  // namespace
@@ -124,11 +130,13 @@ double IntervalBounds::worldPlane(const SearchSample& from, const SearchSample& 
 //   g'' = N''.(Q - tip) - 2 N'.tip' - N.tip'',  N'' = Omega' x N + Omega x (Omega x N),
 // and |g'''| <= omega^3 D + 3 omega^2 S + 3 omega A + J (|N^(k)| <= omega^k, D >=
 // |Q - tip|, S, A, J >= |tip'|, |tip''|, |tip'''|; A = J = 0 for a linear tip). This is
-// that bound of |g'''|; tip_.speed also bounds the tip's path length, mm.
-double IntervalBounds::thirdDerivative(double D) const {
+// that bound of |g'''|; tip_.speed also bounds the tip's path length, mm. J is
+// |N . tip'''|'s bound for the sample's N: N(t) = N where the axis is constant (omega
+// = 0, the arcs, the only kind where it is less than J), and J for every N otherwise.
+double IntervalBounds::thirdDerivative(double D, const Vec3& N) const {
   const double move = tip_.speed;
   return omega_ * omega_ * omega_ * D + 3 * omega_ * omega_ * move + 3 * omega_ * tip_.accel +
-         tip_.jerk;
+         tip_.jerkAlong(N);
 }
 
 // D of steps 2b and 2d: >= |Q - tip(t)| for t in [a.t, b.t] and Q.z in [zLow, zHigh].
@@ -160,7 +168,7 @@ double IntervalBounds::cutterPlane(const SearchSample& from, const SearchSample&
   double gpp = -HUGE_VAL;  // sup of g'' over the interval and those heights
   for (double z : {floor, U})
     gpp = std::max(gpp, dot(from.ddn, Vec3{x_, y_, z} - from.tip) - cross2);
-  gpp += thirdDerivative(D) * w;
+  gpp += thirdDerivative(D, Na) * w;
   const double margin = std::max(0.0, gpp) * w * w / 8;
   auto planeZ = [&](const Vec3& N, const SearchSample& e) {
     const double nq = N.x * (x_ - e.tip.x) + N.y * (y_ - e.tip.y);
@@ -210,7 +218,7 @@ bool IntervalBounds::taylorProves(const SearchSample& from, const SearchSample& 
   const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, from.vel);
   const double D = distanceBound(a, b, z, z);
   const double m =
-      dot(from.ddn, q) - 2 * dot(from.dn, from.vel) - dot(N, from.acc) - thirdDerivative(D) * w;
+      dot(from.ddn, q) - 2 * dot(from.dn, from.vel) - dot(N, from.acc) - thirdDerivative(D, N) * w;
   const double ta = a.t - from.t, tb = b.t - from.t;
   double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
   if (m > 0 && -g1 / m > ta && -g1 / m < tb) low = std::min(low, g0 - 0.5 * g1 * g1 / m);

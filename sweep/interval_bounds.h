@@ -37,8 +37,16 @@ struct TipMotionBounds {
   double speed;  // >= |tip'(t)|: |delta| when linear
   double accel;  // >= |tip''(t)|: 0 when linear
   double jerk;   // >= |tip'''(t)|: 0 when linear
-  // A bound of |N . tip'(t)| over the move.
-  double rateAlong(const Vec3& N) const { return linear ? std::fabs(dot(N, delta)) : speed; }
+  // An arc's curve (its bounds along a direction are smaller: PoseCurve::tipAccelAlong);
+  // null for the other kinds.
+  const PoseCurve* arc = nullptr;
+  // Bounds of |N . tip'(t)|, |N . tip''(t)| and |N . tip'''(t)| over the move, N unit.
+  double rateAlong(const Vec3& N) const {
+    if (arc) return arc->tipRateAlong(N);
+    return linear ? std::fabs(dot(N, delta)) : speed;
+  }
+  double accelAlong(const Vec3& N) const { return arc ? arc->tipAccelAlong(N) : accel; }
+  double jerkAlong(const Vec3& N) const { return arc ? arc->tipJerkAlong(N) : jerk; }
 };
 
 // The lower bounds of f on the vertical line through (x, y) over [a.t, b.t], a.t < b.t,
@@ -62,7 +70,7 @@ class IntervalBounds {
                     double z) const;
 
  private:
-  double thirdDerivative(double D) const;
+  double thirdDerivative(double D, const Vec3& N) const;
   double distanceBound(const SearchSample& a, const SearchSample& b, double zLow,
                        double zHigh) const;
 

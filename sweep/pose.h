@@ -1,13 +1,14 @@
 // Pose and Move: where the cutter is (APT CL convention, CONVENTIONS.md "Tool pose"),
 // and what a tool path holds besides its moves: the cutters of a multi-tool program
-// (CONVENTIONS.md "Tools") and the rotary motion of a 5-axis machine ("Machines").
+// (CONVENTIONS.md "Tools"), the rotary motion of a 5-axis machine ("Machines") and
+// the arcs of G-code (G2/G3).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "sweep/cutter.h"
 #include "base/vec3.h"
+#include "sweep/cutter.h"
 
 namespace scallop {
 
@@ -38,9 +39,28 @@ struct RotaryMotion {
   Vec3 joints0, joints1;  // TCP off: machine X Y Z at both ends, mm
 };
 
+// The tip's motion of a G-code arc (G2/G3) with a constant tool axis: a circle, or a
+// helix rising along the plane's normal n = u x v,
+//     tip(t) = centre + rho(t) (cos theta(t) u + sin theta(t) v) + rise t n,
+//     theta(t) = angle0 + sweep t,   rho(t) = radius0 + (radius1 - radius0) t,
+// with u, v the plane's unit axes (G17: x, y; G18: z, x; G19: y, z). The radii may
+// differ by the 0.002 mm G-code allows (a spiral, as LinuxCNC interpolates it); a full
+// circle sweeps 2 pi.
+struct ArcMotion {
+  Vec3 centre;                      // mm, at the start's height along n
+  Vec3 u, v;                        // unit and orthogonal
+  double angle0 = 0, sweep = 0;     // rad; sweep > 0 turns counter-clockwise about n (G3)
+  double radius0 = 0, radius1 = 0;  // mm, > 0
+  double rise = 0;                  // mm along n over the move
+  Vec3 at(double t) const;          // tip(t) above
+  // A box holding every tip(t): the whole circle's cylinder, rise included.
+  Box3 bounds() const;
+};
+
 // One move: the tip goes straight from `from.tip` to `to.tip`; the axis is
 // interpolated (slerp) when the two axes differ, unless the move is a machine's rotary
-// motion (`rotary` > 0: ToolPath::rotary[rotary - 1] gives the pose curve). Rapids
+// motion (`rotary` > 0: ToolPath::rotary[rotary - 1] gives the pose curve) or an arc
+// (`arc` > 0: its tip follows ToolPath::arcs[arc - 1], the axis stays from.axis). Rapids
 // never touch the stock and are not simulated. `tool` indexes ToolPath::cutters.
 struct Move {
   Pose from;
@@ -48,6 +68,7 @@ struct Move {
   bool rapid = false;
   uint16_t tool = 0;
   uint32_t rotary = 0;
+  uint32_t arc = 0;
   // Feed per tooth of this move, mm (G-code: F / (S flutes)); 0: the job's
   // cutting.feed_per_tooth. Read by the "teeth" cutting model only.
   double feedPerTooth = 0;
@@ -61,6 +82,8 @@ struct ToolPath {
   // Rotary motions of a 5-axis machine's moves (Move::rotary), and the machine.
   std::vector<RotaryMotion> rotary;
   TableMachine machine;
+  // The arcs of the moves that follow one (Move::arc).
+  std::vector<ArcMotion> arcs;
   size_t cuttingMoves() const;
   // The path of move k alone, with its cutter and machine motion (for sweeping one
   // move apart from the others).

@@ -162,7 +162,26 @@ PoseCurve PoseCurve::jointLinear(const TableMachine& machine, const RotaryMotion
   return c;
 }
 
+PoseCurve PoseCurve::arc(const ArcMotion& arc, const Vec3& axis) {
+  PoseCurve c;
+  c.kind_ = Kind::Arc;
+  c.arc_ = std::make_shared<const ArcMotion>(arc);
+  c.tip0_ = arc.at(0);
+  c.tip1_ = arc.at(1);
+  c.u_ = c.a1_ = c.axisMiddle_ = normalize(axis);
+  // The bounds of pose_curve.h at the larger radius, 1e-12 relative for round-off.
+  const double s = std::fabs(arc.sweep), d = std::fabs(arc.radius1 - arc.radius0);
+  const double rho = std::fmax(arc.radius0, arc.radius1), keep = 1 + 1e-12;
+  c.arcSpeed_ = std::sqrt(d * d + rho * rho * s * s + arc.rise * arc.rise) * keep;
+  c.arcPlaneSpeed_ = std::sqrt(d * d + rho * rho * s * s) * keep;
+  c.arcNormal_ = cross(arc.u, arc.v);
+  c.tipAccel_ = std::sqrt(4 * d * d * s * s + rho * rho * s * s * s * s) * keep;
+  c.tipJerk_ = std::sqrt(9 * d * d * s * s * s * s + rho * rho * s * s * s * s * s * s) * keep;
+  return c;
+}
+
 PoseCurve PoseCurve::ofMove(const ToolPath& path, const Move& move, const char* where) {
+  if (move.arc > 0) return arc(path.arcs.at(move.arc - 1), move.from.axis);
   if (move.rotary == 0) return linear(move.from, move.to, where);
   const RotaryMotion& m = path.rotary.at(move.rotary - 1);
   if (!m.tcp) return jointLinear(path.machine, m);
@@ -177,6 +196,13 @@ Vec3 PoseCurve::forward(double t) const {
 }
 
 Vec3 PoseCurve::curvedTipVelocity(double t) const {
+  if (kind_ == Kind::Arc) {
+    const ArcMotion& a = *arc_;
+    const double theta = a.angle0 + a.sweep * t, rho = a.radius0 + (a.radius1 - a.radius0) * t;
+    const double c = std::cos(theta), s = std::sin(theta);
+    const Vec3 er = a.u * c + a.v * s, et = a.v * c - a.u * s;
+    return er * (a.radius1 - a.radius0) + et * (rho * a.sweep) + cross(a.u, a.v) * a.rise;
+  }
   // tip = Z(phi) (T(psi) q + e) + c with phi = -C(t), psi = -T(t); a rotation about the
   // unit axis n by angle a has d/da R v = n x R v.
   const bool bc = kind_ == Kind::JointBC;
@@ -189,10 +215,51 @@ Vec3 PoseCurve::curvedTipVelocity(double t) const {
 
 double PoseCurve::tipSpeedBound() const {
   if (linearTip()) return length(tip1_ - tip0_);
+  if (kind_ == Kind::Arc) return arcSpeed_;
   return std::max(length(tipVelocity(0)), length(tipVelocity(1))) + 0.5 * tipAccel_;
 }
 
+double PoseCurve::arcAcross(const Vec3& N) const {
+  const double along = dot(N, arcNormal_);
+  return std::sqrt(std::max(0.0, dot(N, N) - along * along)) * (1 + 1e-12);
+}
+
+double PoseCurve::tipRateAlong(const Vec3& N) const {
+  if (kind_ != Kind::Arc) return linearTip() ? std::fabs(dot(N, tip1_ - tip0_)) : tipSpeedBound();
+  return (std::fabs(dot(N, arcNormal_) * arc_->rise) + arcAcross(N) * arcPlaneSpeed_) * (1 + 1e-12);
+}
+
+double PoseCurve::tipAccelAlong(const Vec3& N) const {
+  return kind_ == Kind::Arc ? arcAcross(N) * tipAccel_ : tipAccel_;
+}
+
+double PoseCurve::tipJerkAlong(const Vec3& N) const {
+  return kind_ == Kind::Arc ? arcAcross(N) * tipJerk_ : tipJerk_;
+}
+
+double PoseCurve::pathLength() const {
+  if (kind_ != Kind::Arc) return length(tip1_ - tip0_);
+  const ArcMotion& a = *arc_;
+  const double d = a.radius1 - a.radius0;
+  auto speed = [&](double t) {
+    const double rho = a.radius0 + d * t;
+    return std::sqrt(d * d + rho * rho * a.sweep * a.sweep + a.rise * a.rise);
+  };
+  if (d == 0) return speed(0);
+  constexpr int kIntervals = 64;
+  double sum = speed(0) + speed(1);
+  for (int i = 1; i < kIntervals; ++i) sum += (i % 2 ? 4 : 2) * speed(double(i) / kIntervals);
+  return sum / (3 * kIntervals);
+}
+
 Vec3 PoseCurve::curvedTipAcceleration(double t) const {
+  if (kind_ == Kind::Arc) {
+    const ArcMotion& a = *arc_;
+    const double theta = a.angle0 + a.sweep * t, rho = a.radius0 + (a.radius1 - a.radius0) * t;
+    const double c = std::cos(theta), s = std::sin(theta);
+    const Vec3 er = a.u * c + a.v * s, et = a.v * c - a.u * s;
+    return et * (2 * (a.radius1 - a.radius0) * a.sweep) - er * (rho * a.sweep * a.sweep);
+  }
   // With P = T(psi) q and W = P + e: P' = -dT n x P + T dq, P'' = -dT n x (P' + T dq);
   // tip' = -dC z x (Z W) + Z P', so tip'' = -dC z x (tip' + Z P') + Z P''.
   const bool bc = kind_ == Kind::JointBC;
@@ -243,8 +310,9 @@ void PoseCurve::frame(double t, PoseFrame& f) const {
   f.velocity = tipVelocity(t);
   f.acceleration = tipAcceleration(t);
   f.axis = axis(t);
-  if (kind_ == Kind::Slerp) {
-    // The rotation is about w = u x v, which lies across every axis of the move.
+  if (kind_ == Kind::Slerp || kind_ == Kind::Arc) {
+    // The rotation is about w = u x v, which lies across every axis of the move (an
+    // arc's axis does not turn).
     f.e1 = omega_ > 0 ? w_ : normalize(cross(u_, acrossHelper(u_)));
     f.spin = omega_ > 0 ? w_ * phi_ : Vec3{};
     f.spinRate = {};

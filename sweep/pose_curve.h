@@ -28,10 +28,24 @@
 //     as above), q'' = 0 and |q(t)| <= max(|q(0)|, |q(1)|) = Q (|q| is convex in t):
 //         |tip''|  <= omega^2 Q + 2 omega |q'| + |wC|^2 |e|,
 //         |tip'''| <= omega^3 Q + 3 omega^2 |q'| + |wC|^3 |e|   (tipAccelBound/JerkBound).
+//   * Arc (G-code G2/G3, pose.h ArcMotion): the axis constant (omega = 0), the tip on
+//     a circle or helix, tip = centre + rho e_r + rise t n with e_r = cos theta u +
+//     sin theta v, e_theta = n x e_r = -sin theta u + cos theta v, theta' = s (the
+//     sweep), rho' = d (radius1 - radius0), so e_r' = s e_theta, e_theta' = -s e_r and
+//         tip'   = d e_r + rho s e_theta + rise n,
+//         tip''  = 2 d s e_theta - rho s^2 e_r,
+//         tip''' = -3 d s^2 e_r - rho s^3 e_theta,
+//     the parts orthogonal: |tip''| = sqrt(4 d^2 s^2 + rho^2 s^4) and |tip'''| =
+//     sqrt(9 d^2 s^4 + rho^2 s^6), at most their values at rho = max(radius0, radius1)
+//     (rho is linear in t); on a circle (d = 0) exactly r s^2 and r |s|^3, and the
+//     speed sqrt(d^2 + rho^2 s^2 + rise^2) likewise. The bounds keep 1e-12 relative
+//     for their round-off.
 // A new machine curve is a new kind with its own axis(t), omega and, for a curved tip,
 // tipVelocity, tipAcceleration and the bounds: the kernel (swept_move.cpp,
 // ray_clearance.cpp) takes the tip's speed, acceleration and jerk into its bounds.
 #pragma once
+
+#include <memory>
 
 #include "base/vec3.h"
 #include "sweep/pose.h"
@@ -69,13 +83,16 @@ class PoseCurve {
   // A table-table machine with TCP off: joints and angles (radians) linear in t, the
   // tip the forward kinematics of `machine` (above).
   static PoseCurve jointLinear(const TableMachine& machine, const RotaryMotion& motion);
+  // A G-code arc: the tip on `arc` (pose.h), the axis `axis` (normalised here) for the
+  // whole move.
+  static PoseCurve arc(const ArcMotion& arc, const Vec3& axis);
   // The curve of `move` of `path`: its machine motion when it has one (Move::rotary),
-  // otherwise linear(move.from, move.to, where).
+  // its arc (Move::arc), otherwise linear(move.from, move.to, where).
   static PoseCurve ofMove(const ToolPath& path, const Move& move, const char* where = "path move");
 
   Vec3 tip(double t) const {
     if (t >= 1) return tip1_;
-    if (!linearTip()) return t <= 0 ? tip0_ : forward(t);
+    if (!linearTip()) return t <= 0 ? tip0_ : kind_ == Kind::Arc ? arc_->at(t) : forward(t);
     return tip0_ + (tip1_ - tip0_) * t;
   }
   // d tip / dt (mm per unit t).
@@ -86,11 +103,27 @@ class PoseCurve {
   // t^2, t^3): 0 for the kinds whose tip is linear.
   double tipAccelBound() const { return tipAccel_; }
   double tipJerkBound() const { return tipJerk_; }
+  // For a unit direction N, bounds over [0, 1] of |N . tip'|, |N . tip''| and
+  // |N . tip'''|: those of the tip's speed, acceleration and jerk, except on an arc,
+  // whose tip'' and tip''' lie in its plane and whose tip' leaves it by the rise alone:
+  // there |N . tip^(k)| <= |N across the normal| times the in-plane bound (k = 2, 3),
+  // and |N . tip'| <= |N . n| |rise| + |N across n| sqrt(d^2 + rho_max^2 s^2). (On a
+  // horizontal circle a plane of normal z sees no acceleration at all.)
+  double tipRateAlong(const Vec3& N) const;
+  double tipAccelAlong(const Vec3& N) const;
+  double tipJerkAlong(const Vec3& N) const;
   // A proven bound over [0, 1] of |d tip / dt| (mm per unit t): |p1 - p0| for the kinds
   // whose tip is linear; on a curve |tip'(t)| <= |tip'(end)| + A |t - end| for the
   // nearer end, at most the larger end speed plus A / 2.
   double tipSpeedBound() const;
-  bool linearTip() const { return kind_ != Kind::JointBC && kind_ != Kind::JointAC; }
+  bool linearTip() const { return kind_ < Kind::JointBC; }
+  // The tip follows a G-code arc (PoseCurve::arc).
+  bool arcTip() const { return kind_ == Kind::Arc; }
+  // The length of the tip's path, mm: the chord for a linear tip, the arc's length
+  // for an arc (closed form on a circle or helix; Simpson's rule on 64 intervals for a
+  // spiral, whose speed varies by at most 0.002 mm / radius relative); the end-to-end
+  // chord for the joint-linear kind (the teeth model refuses it).
+  double pathLength() const;
   Vec3 axis(double t) const;
   Pose pose(double t) const { return {tip(t), axis(t)}; }
   // The cutter's angular velocity Omega(t) (rad per unit t; a direction n fixed to the
@@ -123,7 +156,8 @@ class PoseCurve {
   bool constantAxis() const { return omega_ == 0; }
 
  private:
-  enum class Kind : unsigned char { Slerp, TableBC, TableAC, JointBC, JointAC };
+  // The kinds whose tip is linear come first (linearTip).
+  enum class Kind : unsigned char { Slerp, TableBC, TableAC, JointBC, JointAC, Arc };
   bool tableBC() const { return kind_ == Kind::TableBC || kind_ == Kind::JointBC; }
   // Joint-linear: the forward kinematics at t of the linear joints, and its derivatives.
   Vec3 forward(double t) const;
@@ -145,6 +179,13 @@ class PoseCurve {
   // Joint-linear: q(t) = q0_ + t dq_, the offset e_ and the constant c_ above, mm.
   Vec3 q0_, dq_, e_, c_;
   double tipAccel_ = 0, tipJerk_ = 0;
+  // Arc: the tip's circle or helix, shared (a pointer keeps the other kinds' moves
+  // small: a scene holds one curve per move).
+  std::shared_ptr<const ArcMotion> arc_;
+  double arcSpeed_ = 0;       // Arc: >= |tip'| over the move, mm per unit t
+  double arcPlaneSpeed_ = 0;  // Arc: >= |tip' - rise n|, mm per unit t
+  Vec3 arcNormal_;            // Arc: n = u x v
+  double arcAcross(const Vec3& N) const;
 };
 
 }  // namespace scallop

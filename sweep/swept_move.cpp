@@ -66,7 +66,9 @@ SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
       curve_(curve),
       reach_(std::hypot(cutter.fluteLength, cutter.radius)),
       knotSpacing_(kContactKnotSpacing) {
-  if (curve_.constantAxis() && !cutter.general())
+  // A curved tip (an arc) goes through the turning kernel even with a constant axis
+  // (SweptSegment is the sweep along a straight line only), and so does a general cutter.
+  if (curve_.constantAxis() && curve_.linearTip() && !cutter.general())
     segment_ = std::make_shared<const SweptSegment>(cutter, curve_.tipStart(), curve_.tipEnd(),
                                                     curve_.axis(0));
   else

@@ -65,7 +65,8 @@ TipPlaneBound tipPlaneBound(const PoseCurve& curve, double x0, double y0, double
     D = std::max(D, std::sqrt(horizontal2 + vertical * vertical));
   }
   D += 0.5 * S + 1;
-  const double E = omega * omega * D + 2 * omega * S + curve.tipAccelBound();
+  // A along the axis (constant where an arc's tip'' is smaller along it).
+  const double E = omega * omega * D + 2 * omega * S + curve.tipAccelAlong(axis[0]);
   if (!(E / (8 * std::min(axis[0].z, axis[1].z)) <= 1)) return out;
   for (int i = 0; i < 2; ++i) {
     // The margin of step 3, and the round-off of the few products here (each well

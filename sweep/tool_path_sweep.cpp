@@ -99,7 +99,11 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       if (fz > 0) radPerMm = 2 * kPi / (cutters[mv.tool].teeth.flutes * fz);
     }
     const double phaseStart = phase;
-    phase = std::fmod(phase + radPerMm * length(mv.to.tip - mv.from.tip), 2 * kPi);
+    // s runs along the tip's path: an arc's length, not its chord.
+    const double pathMm = mv.arc > 0 && mv.arc <= path.arcs.size()
+                              ? PoseCurve::ofMove(path, mv).pathLength()
+                              : length(mv.to.tip - mv.from.tip);
+    phase = std::fmod(phase + radPerMm * pathMm, 2 * kPi);
     if (mv.rapid) continue;
     const std::string where = "path move " + std::to_string(k + 1);
     if (mv.tool >= cutters.size())
@@ -117,12 +121,13 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
                                   " cutter (use the envelope model)");
     const Cutter& cutter = swept[mv.tool];
     const PoseCurve curve = PoseCurve::ofMove(path, mv, where.c_str());
-    if (teeth && !curve.linearTip())
+    if (teeth && !curve.linearTip() && !curve.arcTip())
       throw InputError(where,
                        "the teeth cutting model needs a straight tip motion; TCP-off machine "
                        "moves (G49) are not supported with teeth");
-    // A general cutter sweeps every move through SweptMove's certified search.
-    if (curve.constantAxis() && !cutter.general()) {
+    // A general cutter sweeps every move through SweptMove's certified search, and an
+    // arc is never merged: it is no segment (its tip is curved).
+    if (curve.constantAxis() && curve.linearTip() && !cutter.general()) {
       const Vec3 axis = curve.axis(0);
       if (!planned.empty() &&
           continues(planned.back(), swept[planned.back().cutter], curve.tipStart(), curve.tipEnd(),
@@ -152,11 +157,12 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
   buildPlanned(swept, planned, planned.size(), turning, out);
   if (teeth) {
     // Each move's edges: the cutter with its teeth (the move holds its spindle
-    // envelope), phi(t) = phaseStart + radPerMm |tip1 - tip0| t.
+    // envelope), phi(t) = phaseStart + radPerMm len t, len the tip's path length (an
+    // arc's: its speed is constant, so phi is linear in the distance along it too).
     size_t i = 0;
     for (SweptMove& m : out) {
       const Spindle& sp = spindle[i++];
-      const double len = length(m.end() - m.start());
+      const double len = m.curve().pathLength();
       m.attachTeeth(std::make_shared<ToothSweep>(cutters[sp.tool], m.curve(), sp.phaseStart,
                                                  sp.radPerMm * len));
     }

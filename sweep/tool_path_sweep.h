@@ -22,8 +22,9 @@ namespace scallop {
 // With the "teeth" cutting model each move also carries its edges (ToothSweep) with the
 // spindle angle phi(s) = phi0 + 2 pi s / (flutes fz) of CuttingModel, s the tip's
 // distance along the path; its envelope is then the cutter's spindleEnvelope(). A move
-// without a feed per tooth (neither its own nor the model's), or whose tip is not linear
-// (TCP off), is an InputError naming the move.
+// without a feed per tooth (neither its own nor the model's), or whose tip follows a
+// machine's curve (TCP off), is an InputError naming the move; an arc's s is its arc
+// length. Arcs (Move::arc) are single moves, never merged.
 std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path,
                                      const CuttingModel& cutting = {});
 

@@ -123,7 +123,8 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
   e2Start_ = cross(axisStart_, e1Start_);
   helixSlope_ = std::tan(cutter_.teeth.helixDeg * kPi / 180) / cutter_.radius;
   runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
-  tipSpeed_ = length(curve_.tipEnd() - curve_.tipStart());
+  tipSpeed_ = curve_.tipSpeedBound();
+  translates_ = curve_.constantAxis() && curve_.linearTip();
   reach_ = std::hypot(cutter_.fluteLength, cutter_.radius) + cutter_.teeth.runout;
 }
 
@@ -173,8 +174,7 @@ ToothSweep::Sample ToothSweep::pose(double t) const {
 // A proven lower bound of h(t) from a sample's tangent line (h is convex in t for a
 // constant axis), which lets the stationary search start just below its answer.
 double ToothSweep::tangentBelow(const Sample* ref, double t) const {
-  if (!ref || !curve_.constantAxis() || !ref->envDone || !ref->envHit || !ref->slopeKnown)
-    return -HUGE_VAL;
+  if (!ref || !translates_ || !ref->envDone || !ref->envHit || !ref->slopeKnown) return -HUGE_VAL;
   const double z = ref->envZ + ref->envSlope * (t - ref->t);
   return z - 1e-9 * (1 + std::abs(z));
 }
@@ -269,7 +269,7 @@ double ToothSweep::exitBound(const Sample& a, const Sample& b, double x, double 
   const Sample mid = pose(0.5 * (a.t + b.t));
   const double delta = (tipSpeed_ + curve_.turnRate() * reach_) * 0.5 * w * (1 + 1e-12) + 1e-12;
   double bound = exitLowerBound(mid.tip, mid.a, delta + cutter_.teeth.runout, x, y);
-  if (curve_.constantAxis()) {
+  if (translates_) {
     const double ends = std::min(exitLowerBound(a.tip, a.a, cutter_.teeth.runout, x, y),
                                  exitLowerBound(b.tip, b.a, cutter_.teeth.runout, x, y));
     bound = std::max(bound, ends);
@@ -298,7 +298,7 @@ bool ToothSweep::calm(const Sample& a, const Sample& b, int side) const {
 
 // A lower bound of h over [a.t, b.t] where a pruning proof exists, else -inf.
 double ToothSweep::envelopeBound(Sample& a, Sample& b, double x, double y, double best) const {
-  if (curve_.constantAxis()) {
+  if (translates_) {
     needEnvelope(a, x, y, &b);
     needEnvelope(b, x, y, &a);
     if (!a.envHit || !b.envHit || !a.slopeKnown || !b.slopeKnown) return -HUGE_VAL;
@@ -403,8 +403,7 @@ void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int dept
       continue;
     }
     // Without runout X(t).z itself is concave in t (the cutter translates linearly).
-    if (side == 1 && curve_.constantAxis() && cutter_.teeth.runout <= 0 &&
-        std::min(a.z[1], b.z[1]) >= best.z)
+    if (side == 1 && translates_ && cutter_.teeth.runout <= 0 && std::min(a.z[1], b.z[1]) >= best.z)
       continue;
     const double fa = absoluteF(a, side);
     const double df = deltaF(a, b, side);
@@ -427,8 +426,8 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
   // The scan step, in t.
   const double step = kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_);
   Crossing best{cutoff, 0, Vec3{0, 0, -1}, kMaxSplits, false, step / 64};
-  bool scanWhole = !curve_.constantAxis();
-  if (curve_.constantAxis()) {
+  bool scanWhole = !translates_;
+  if (translates_) {
     // t* of the envelope's lowest point: the swept solid's support point in direction n
     // is the cutter's support point plus a point of the tip's segment.
     const Vec3 p0 = curve_.tipStart(), d = curve_.tipEnd() - p0;

@@ -25,7 +25,8 @@ namespace scallop {
 class ToothSweep {
  public:
   // `cutter` carries its teeth; phi(t) = phaseStart + phaseRate t, radians. Moves whose
-  // tip is not linear (TCP-off machine moves) are refused by sweepToolPath.
+  // tip follows a machine's curve (TCP-off machine moves) are refused by sweepToolPath;
+  // arcs are scanned as turning moves are (their envelope's height is not convex).
   ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phaseStart, double phaseRate);
 
   // The lowest point on the vertical line through (x, y) that an edge of the move
@@ -83,8 +84,11 @@ class ToothSweep {
   Vec3 axisStart_, e1Start_, e2Start_;  // the spindle frame at t = 0
   double helixSlope_ = 0;               // tan(beta) / R, rad per mm of height
   double runoutPhase_ = 0;              // psi_r, rad
-  double tipSpeed_ = 0;                 // |tip'|, mm per unit t (a linear tip)
-  double reach_ = 0;                    // the farthest edge point from the spindle tip, mm
+  double tipSpeed_ = 0;                 // >= |tip'|, mm per unit t (tipSpeedBound)
+  // The cutter translates along a line (constant axis, linear tip): the envelope's
+  // height is then convex in t. Not on an arc.
+  bool translates_ = false;
+  double reach_ = 0;  // the farthest edge point from the spindle tip, mm
 };
 
 }  // namespace scallop

@@ -84,7 +84,7 @@ Job loadSimulateJob(const SimulateArgs& args) {
   // A grid too large to hold is accepted here: the run computes it in bands.
   const bool exact = args.run.method == "exact";
   return args.jobFile.empty() ? loadJob(defaultJobJson(), "built-in default job", !exact)
-                              : loadJobFile(args.jobFile, !exact, args.pathFile);
+                              : loadJobFile(args.jobFile, !exact, args.pathFile, args.arcChords);
 }
 
 // --print-bands: the band layout the job and --tile-rows give, without computing, so
@@ -166,6 +166,8 @@ Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
                   "Tool-path file that replaces the job's path (format from the extension;\n"
                   "needs JOB for the stock and grid)");
   addThreadsOption(*app, common);
+  app->add_flag("--arc-chords", args->arcChords,
+                "G-code arcs as chords within 1e-4 mm (the old baseline), not exact arc moves");
   app->add_flag("--json", args->run.quiet, "Print report.json on stdout (and nothing else there)");
   app->add_option("--method", args->run.method,
                   "exact: exact swept-solid heights (default); stamp: classical z-map baseline,\n"

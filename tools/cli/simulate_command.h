@@ -10,9 +10,10 @@
 namespace scallop {
 
 struct SimulateArgs {
-  std::string jobFile;   // empty: the built-in default job
-  std::string pathFile;  // --path: replaces the job's path (tools/io/tool_path_file.h)
-  RunSettings run;       // run.quiet is --json: print report.json on stdout
+  std::string jobFile;     // empty: the built-in default job
+  std::string pathFile;    // --path: replaces the job's path (tools/io/tool_path_file.h)
+  bool arcChords = false;  // --arc-chords: G-code arcs as chords (the job key arc_chords)
+  RunSettings run;         // run.quiet is --json: print report.json on stdout
 };
 
 // Returns the process exit status; throws InputError for bad input.

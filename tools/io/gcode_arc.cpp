@@ -25,7 +25,7 @@ void arcPlaneAxes(int plane, int& u, int& v, int& w) {
   w = 3 - u - v;
 }
 
-std::vector<Vec3> arcChords(const ArcSpec& arc, double tol, const std::string& where) {
+ArcMotion resolveArc(const ArcSpec& arc, const std::string& where) {
   int iu, iv, iw;
   arcPlaneAxes(arc.plane, iu, iv, iw);
   const double su = component(arc.start, iu), sv = component(arc.start, iv);
@@ -58,8 +58,22 @@ std::vector<Vec3> arcChords(const ArcSpec& arc, double tol, const std::string& w
   } else {
     while (sweep >= 0) sweep -= 2 * kPi;
   }
+  ArcMotion out;
+  double centre[3], u[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+  centre[iu] = cu, centre[iv] = cv, centre[iw] = component(arc.start, iw);
+  u[iu] = 1, v[iv] = 1;
+  out.centre = {centre[0], centre[1], centre[2]};
+  out.u = {u[0], u[1], u[2]}, out.v = {v[0], v[1], v[2]};
+  out.angle0 = a0, out.sweep = sweep;
+  out.radius0 = r0, out.radius1 = r1;
+  out.rise = component(arc.end, iw) - component(arc.start, iw);
+  return out;
+}
+
+std::vector<Vec3> arcChords(const ArcSpec& spec, double tol, const std::string& where) {
+  const ArcMotion arc = resolveArc(spec, where);
+  const double rMax = std::max(arc.radius0, arc.radius1), sweep = arc.sweep;
   // Chords with sagitta r (1 - cos(step / 2)) <= tolerance.
-  const double rMax = std::max(r0, r1);
   const double step = tol < rMax ? 2 * std::acos(1 - tol / rMax) : kPi / 2;
   const double pieces = std::ceil(std::fabs(sweep) / std::min(step, kPi / 2));
   if (pieces > 1e6)
@@ -69,15 +83,8 @@ std::vector<Vec3> arcChords(const ArcSpec& arc, double tol, const std::string& w
   const int n = std::max(1, int(pieces));
   std::vector<Vec3> points;
   points.reserve(size_t(n));
-  for (int k = 1; k < n; ++k) {
-    const double f = double(k) / n, angle = a0 + sweep * f, rho = r0 + (r1 - r0) * f;
-    double c[3];
-    c[iu] = cu + rho * std::cos(angle);
-    c[iv] = cv + rho * std::sin(angle);
-    c[iw] = component(arc.start, iw) + (component(arc.end, iw) - component(arc.start, iw)) * f;
-    points.push_back({c[0], c[1], c[2]});
-  }
-  points.push_back(arc.end);
+  for (int k = 1; k < n; ++k) points.push_back(arc.at(double(k) / n));
+  points.push_back(spec.end);
   return points;
 }
 

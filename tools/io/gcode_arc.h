@@ -1,5 +1,6 @@
-// Arcs of G-code (G2/G3) cut into chords: the geometry of the G-code reader
-// (tools/io/gcode_reader.h), apart from its words.
+// Arcs of G-code (G2/G3): the geometry of the G-code reader (tools/io/gcode_reader.h),
+// apart from its words. An arc is one move whose tip follows it (resolveArc), or, as
+// the --arc-chords baseline, chords within a tolerance (arcChords).
 //
 // An arc lies in the plane G17 (XY), G18 (ZX) or G19 (YZ); the third axis moves
 // linearly (a helix). Its centre is given by I/J/K offsets (from the start, or
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "base/vec3.h"
+#include "sweep/pose.h"
 
 namespace scallop {
 
@@ -32,9 +34,16 @@ struct ArcSpec {
 // The in-plane coordinates of the plane: (u, v, normal) axis indices 0 = x, 1 = y, 2 = z.
 void arcPlaneAxes(int plane, int& u, int& v, int& w);
 
-// The chord ends from the first one after the start to `end` itself (exactly).
-// Throws InputError(where) for an R too small for the chord, radii that differ, a
-// zero radius, or more than a million chords.
+// The arc as the tip's motion of one move (pose.h ArcMotion): its centre, the plane's
+// axes, the start angle, the signed sweep (a full circle, start = end with I/J/K, is
+// 2 pi), the radii at both ends and the rise along the normal. Throws InputError(where)
+// for an R too small for the chord, an R arc whose start is its end, radii that
+// differ by more than kArcRadiusSlack, or a zero radius.
+ArcMotion resolveArc(const ArcSpec& arc, const std::string& where);
+
+// The chord ends from the first one after the start to `end` itself (exactly), each
+// the resolved arc's point at t = k / n. Throws as resolveArc does, or for more than a
+// million chords.
 std::vector<Vec3> arcChords(const ArcSpec& arc, double tolerance, const std::string& where);
 
 }  // namespace scallop

@@ -247,9 +247,10 @@ Pose GcodeInterpreter::poseOf(const State& s) const {
           machineAxis(m.kinematics, s.tilt, s.spin)};
 }
 
-void GcodeInterpreter::moveTo(const State& to, bool rapid) {
+void GcodeInterpreter::moveTo(const State& to, bool rapid, const ArcMotion* arc) {
   const bool turns = to.tilt != state_.tilt || to.spin != state_.spin;
-  if (to.pos == state_.pos && !turns) return;
+  // A full circle ends where it starts, and is a move all the same.
+  if (to.pos == state_.pos && !turns && !arc) return;
   out_.addMove(poseOf(state_), poseOf(to), rapid, line_);
   Move& mv = out_.path.moves.back();
   mv.tool = uint16_t(rapid ? std::max(spindle_, 0) : toolIndex());
@@ -258,6 +259,10 @@ void GcodeInterpreter::moveTo(const State& to, bool rapid) {
     out_.path.rotary.push_back(
         {state_.tilt, to.tilt, state_.spin, to.spin, tcp_, state_.pos, to.pos});
     mv.rotary = uint32_t(out_.path.rotary.size());
+  }
+  if (arc) {
+    out_.path.arcs.push_back(*arc);
+    mv.arc = uint32_t(out_.path.arcs.size());
   }
   if (firstMoveLine_ == 0) firstMoveLine_ = line_;
   state_ = to;
@@ -369,6 +374,14 @@ void GcodeInterpreter::arc(const GcodeBlock& b, const State& to) {
                                            codeText('G', motion_), offU, offV));
     a.centreU = component(a.start, iu) + (b.given(offU) ? b.at(offU) * scale_ : 0.0);
     a.centreV = component(a.start, iv) + (b.given(offV) ? b.at(offV) * scale_ : 0.0);
+  }
+  // One move along the arc, exact. With a machine and TCP off the tip in the part
+  // frame is the forward kinematics of the joints, which the arc does not follow in
+  // this form: chords there, as with the --arc-chords baseline.
+  if (!options_.arcChords && (!options_.machine || tcp_)) {
+    const ArcMotion arc = resolveArc(a, where_);
+    moveTo(to, false, &arc);
+    return;
   }
   for (const Vec3& p : arcChords(a, options_.arcTolerance, where_))
     moveTo({p, state_.tilt, state_.spin}, false);

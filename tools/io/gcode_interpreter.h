@@ -38,7 +38,8 @@ class GcodeInterpreter {
   void cycle(const GcodeBlock& b);
 
   Pose poseOf(const State& s) const;
-  void moveTo(const State& to, bool rapid);
+  // A move to `to`; `arc`, when given, is the path its tip follows (an exact G2/G3).
+  void moveTo(const State& to, bool rapid, const ArcMotion* arc = nullptr);
   void ignore(const std::string& word, const std::string& meaning);
   int toolIndex();
   void feeds(const GcodeBlock& b, const GcodeGroups& g);

@@ -174,6 +174,7 @@ const char* defaultJobJson() {
 PathFileOptions Job::pathOptions() const {
   PathFileOptions o;
   o.blockDelete = blockDelete;
+  o.arcChords = arcChords;
   o.workOffsets = workOffsets;
   o.tools = tools;
   o.machine = machine;
@@ -240,7 +241,7 @@ Job parseJob(const std::string& textIn, const std::string& source,
                        "tolerance; remove \"sweep\" from the job");
     rejectUnknownKeys(doc,
                       {"tool", "tools", "cutting", "stock", "grid", "path", "design",
-                       "work_offsets", "block_delete", "machine"},
+                       "work_offsets", "block_delete", "arc_chords", "machine"},
                       "");
     Job job;
     job.source = source;
@@ -261,6 +262,7 @@ Job parseJob(const std::string& textIn, const std::string& source,
     if (doc.contains("work_offsets"))
       job.workOffsets = parseWorkOffsets(requireObject(doc, "work_offsets", "work_offsets"));
     job.blockDelete = boolean(doc, "block_delete", "block_delete", false);
+    job.arcChords = boolean(doc, "arc_chords", "arc_chords", false);
     if (doc.contains("machine"))
       job.machine = parseMachine(requireObject(doc, "machine", "machine"));
     namespace fs = std::filesystem;
@@ -375,6 +377,7 @@ json jobToJson(const Job& job) {
   }
   if (!offsets.empty()) out["work_offsets"] = offsets;
   if (job.blockDelete) out["block_delete"] = true;
+  if (job.arcChords) out["arc_chords"] = true;
   if (job.machine) {
     const TableMachine& g = job.machine->geometry;
     out["machine"] = {

@@ -40,6 +40,8 @@ struct Job {
   std::array<Vec3, 6> workOffsets{};
   // "block_delete": true skips G-code lines starting with '/'.
   bool blockDelete = false;
+  // G-code arcs as chords within 1e-4 mm (the --arc-chords baseline), not exact moves.
+  bool arcChords = false;
   // "machine": a 5-axis machine for G-code rotary words (CONVENTIONS.md "Machines").
   std::optional<MachineSpec> machine;
   Box3 stock;

@@ -64,7 +64,10 @@ struct MachineSpec {
 };
 
 struct PathFileOptions {
-  // Arcs (G2/G3) become chords whose distance from the true arc is at most this, mm.
+  // Arcs (G2/G3) are single moves whose tip follows the arc exactly; with arcChords
+  // (the --arc-chords baseline) they become chords whose distance from the true arc is
+  // at most arcTolerance, mm.
+  bool arcChords = false;
   double arcTolerance = 1e-4;
   // G-code block delete: lines starting with '/' are skipped (on) or read (off).
   bool blockDelete = false;

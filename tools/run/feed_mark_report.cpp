@@ -33,9 +33,11 @@ struct Xy {
   double x, y;
 };
 
-// Whether move b, right after a, continues a's straight line in xy in the same sense.
+// Whether move b, right after a, continues a's straight line in xy in the same sense
+// (an arc, Move::arc, is no straight line).
 bool continues(const Move& a, const Move& b) {
-  if (b.rapid || b.tool != a.tool || b.from.tip.x != a.to.tip.x || b.from.tip.y != a.to.tip.y)
+  if (b.rapid || b.arc > 0 || b.tool != a.tool || b.from.tip.x != a.to.tip.x ||
+      b.from.tip.y != a.to.tip.y)
     return false;
   const double ax = a.to.tip.x - a.from.tip.x, ay = a.to.tip.y - a.from.tip.y;
   const double bx = b.to.tip.x - b.from.tip.x, by = b.to.tip.y - b.from.tip.y;
@@ -78,7 +80,7 @@ json centreLine(const Job& job, const GridSpec& g) {
     const Move& m = moves[k];
     const double dx = m.to.tip.x - m.from.tip.x, dy = m.to.tip.y - m.from.tip.y;
     const double len2 = dx * dx + dy * dy;
-    if (m.rapid || !(len2 > 0)) continue;
+    if (m.rapid || m.arc > 0 || !(len2 > 0)) continue;
     const double t =
         std::clamp(((cx - m.from.tip.x) * dx + (cy - m.from.tip.y) * dy) / len2, 0.0, 1.0);
     const double d = std::hypot(m.from.tip.x + t * dx - cx, m.from.tip.y + t * dy - cy);

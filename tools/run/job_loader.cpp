@@ -156,13 +156,15 @@ void loadJobInputs(Job& job, bool checkMemory) {
 }
 
 Job loadJob(const std::string& text, const std::string& source, bool checkMemory,
-            const std::string& pathOverride) {
+            const std::string& pathOverride, bool arcChords) {
   Job job = parseJob(text, source, pathOverride);
+  if (arcChords) job.arcChords = true;
   loadJobInputs(job, checkMemory);
   return job;
 }
 
-Job loadJobFile(const std::string& path, bool checkMemory, const std::string& pathOverride) {
+Job loadJobFile(const std::string& path, bool checkMemory, const std::string& pathOverride,
+                bool arcChords) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path, "is a folder, expected a job file (JSON)");
@@ -170,7 +172,7 @@ Job loadJobFile(const std::string& path, bool checkMemory, const std::string& pa
   if (!in) throw InputError(path, "cannot open the job file");
   std::ostringstream text;
   text << in.rdbuf();
-  return loadJob(text.str(), path, checkMemory, pathOverride);
+  return loadJob(text.str(), path, checkMemory, pathOverride, arcChords);
 }
 
 }  // namespace scallop

@@ -14,12 +14,13 @@ namespace scallop {
 // tools/run/tiled_simulation.h). Errors name the job file first, as parseJob's do.
 void loadJobInputs(Job& job, bool checkMemory = true);
 
-// parseJob, then loadJobInputs.
+// parseJob, then loadJobInputs. `arcChords` (the CLI's --arc-chords) reads G-code arcs
+// as chords, as the job key "arc_chords" does.
 Job loadJob(const std::string& text, const std::string& source, bool checkMemory = true,
-            const std::string& pathOverride = "");
+            const std::string& pathOverride = "", bool arcChords = false);
 
 // Reads the job file at `path`, then loadJob.
 Job loadJobFile(const std::string& path, bool checkMemory = true,
-                const std::string& pathOverride = "");
+                const std::string& pathOverride = "", bool arcChords = false);
 
 }  // namespace scallop

@@ -7,17 +7,21 @@
 #include <cmath>
 #include <sstream>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "tests/support/input_error_message.h"
 
 namespace scallop {
 namespace {
 
-ToolPathFile parse(const std::string& text, double arcTolerance = 1e-4) {
+// `chordTolerance` > 0: arcs as chords (the --arc-chords baseline) within it; 0: each
+// arc one exact move (the default).
+ToolPathFile parse(const std::string& text, double chordTolerance = 0) {
   std::istringstream in(text);
   ToolPathFile out;
   PathFileOptions options;
-  options.arcTolerance = arcTolerance;
+  options.arcChords = chordTolerance > 0;
+  if (chordTolerance > 0) options.arcTolerance = chordTolerance;
   readGcode(in, "t.nc", options, out);
   return out;
 }
@@ -76,18 +80,52 @@ TEST(GcodeReader, FullCircleG2IsChordedWithinTheTolerance) {
 
 TEST(GcodeReader, RadiusFormPicksTheShortOrLongArc) {
   // Quarter circle counter-clockwise from (1, 0) to (0, 1) about the origin.
-  const ToolPathFile shortArc = parse("G0 X1 Y0 Z0\nG3 X0 Y1 R1\n");
+  const ToolPathFile shortArc = parse("G0 X1 Y0 Z0\nG3 X0 Y1 R1\n", 1e-4);
   expectOnCircle(shortArc, 0, 0, 1, 1e-4);
   EXPECT_GT(shortArc.path.moves[0].to.tip.x, 0);
   // R < 0: the three-quarter arc, about (1, 1).
-  const ToolPathFile longArc = parse("G0 X1 Y0 Z0\nG3 X0 Y1 R-1\n");
+  const ToolPathFile longArc = parse("G0 X1 Y0 Z0\nG3 X0 Y1 R-1\n", 1e-4);
   expectOnCircle(longArc, 1, 1, 1, 1e-4);
   EXPECT_GT(longArc.path.moves.size(), 2 * shortArc.path.moves.size());
 }
 
+// The exact arc of one move: its centre, radius, start angle and sweep.
+void expectArc(const ToolPathFile& f, size_t move, const Vec3& centre, double radius, double angle0,
+               double sweep, double rise) {
+  ASSERT_LT(move, f.path.moves.size());
+  const Move& m = f.path.moves[move];
+  ASSERT_GT(m.arc, 0u);
+  const ArcMotion& a = f.path.arcs.at(m.arc - 1);
+  EXPECT_LT(length(a.centre - centre), 1e-12);
+  EXPECT_NEAR(a.radius0, radius, 1e-12);
+  EXPECT_NEAR(a.radius1, radius, 1e-12);
+  EXPECT_NEAR(a.angle0, angle0, 1e-12);
+  EXPECT_NEAR(a.sweep, sweep, 1e-12);
+  EXPECT_NEAR(a.rise, rise, 1e-12);
+  EXPECT_LT(length(a.at(0) - m.from.tip), 1e-12);
+  EXPECT_LT(length(a.at(1) - m.to.tip), 1e-12);
+}
+
+TEST(GcodeReader, ArcsAreSingleExactMovesInEveryPlaneAndForm) {
+  // IJK and R forms, short and long, in G17; a full circle; helices in G18 and G19.
+  const ToolPathFile f = parse(
+      "G0 X1 Y0 Z0\nG3 X0 Y1 R1\nG0 X1 Y0\nG3 X0 Y1 R-1\nG0 X5 Y0 Z-1\nG2 X5 Y0 I-5 J0\n"
+      "G18\nG0 X2 Y0 Z0\nG2 X-2 Y2 Z0 I-2 K0\nG19\nG0 X0 Y0 Z3\nG3 X-1 Y0 Z-3 J0 K-3\n");
+  ASSERT_EQ(f.path.arcs.size(), 5u);
+  expectArc(f, 0, {0, 0, 0}, 1, 0, kPi / 2, 0);
+  expectArc(f, 2, {1, 1, 0}, 1, -kPi / 2, 1.5 * kPi, 0);
+  expectArc(f, 4, {0, 0, -1}, 5, 0, -2 * kPi, 0);  // G2 from (5, 0): clockwise, whole
+  EXPECT_EQ(f.path.moves[4].from.tip, f.path.moves[4].to.tip);
+  // G18: u = z, v = x, the normal y: from (z, x) = (0, 2) to (0, -2) clockwise, y 0 -> 2.
+  expectArc(f, 6, {0, 0, 0}, 2, kPi / 2, -kPi, 2);
+  // G19: u = y, v = z, the normal x: from (y, z) = (0, 3) to (0, -3) counter-clockwise.
+  expectArc(f, 8, {0, 0, 0}, 3, kPi / 2, kPi, -1);
+  for (const Move& m : f.path.moves) EXPECT_EQ(m.arc > 0, !m.rapid);
+}
+
 TEST(GcodeReader, HelixInG18MovesYLinearly) {
   // ZX plane: centre offset K (z) and I (x); half circle with y rising 0 -> 2.
-  const ToolPathFile f = parse("G18\nG0 X2 Y0 Z0\nG2 X-2 Y2 Z0 I-2 K0\n");
+  const ToolPathFile f = parse("G18\nG0 X2 Y0 Z0\nG2 X-2 Y2 Z0 I-2 K0\n", 1e-4);
   const size_t n = f.path.moves.size();
   ASSERT_GT(n, 10u);
   for (size_t k = 0; k < n; ++k) {
