@@ -171,9 +171,9 @@ Cutter parseShapedCutter(const json& tool, const std::string& type,
   throw InputError(f + ".type", "unknown cutter type \"" + type + "\"");
 }
 
-json profileSegmentsToJson(const Cutter& cutter) {
+json profileSegmentsToJson(const CutterProfile& profile) {
   json segments = json::array();
-  for (const ProfileSegment& seg : cutter.profile->segments()) {
+  for (const ProfileSegment& seg : profile.segments()) {
     json item = {{"from", {seg.rho0, seg.s0}}, {"to", {seg.rho1, seg.s1}}};
     if (seg.arcRadius > 0) {
       item["arc_radius"] = seg.arcRadius;

@@ -21,8 +21,8 @@ const std::set<std::string>& shapedCutterTypeNames();
 Cutter parseShapedCutter(const nlohmann::json& tool, const std::string& typeName,
                          const std::set<std::string>& teethKeys, const std::string& field);
 
-// {"segments": [{"from": [rho, s], "to": [rho, s], "arc_radius": R, "centre": [rho, s]}]}
-// (arc keys only for arcs): the profile of a general cutter, mm.
-nlohmann::json profileSegmentsToJson(const Cutter& cutter);
+// [{"from": [rho, s], "to": [rho, s], "arc_radius": R, "centre": [rho, s]}, ...] (arc
+// keys only for arcs): a profile's chain from the tip up, mm.
+nlohmann::json profileSegmentsToJson(const CutterProfile& profile);
 
 }  // namespace scallop

@@ -103,7 +103,7 @@ json cutterToJson(const Cutter& c) {
             {"flutes", c.teeth.flutes},        {"helix_deg", c.teeth.helixDeg},
             {"runout_mm", c.teeth.runout},     {"runout_phase_deg", c.teeth.runoutPhaseDeg}};
   // A general cutter's solid is its profile: echoed, so a report says what was swept.
-  if (c.general()) j["segments"] = profileSegmentsToJson(c);
+  if (c.general()) j["segments"] = profileSegmentsToJson(*c.profile);
   return j;
 }
 
