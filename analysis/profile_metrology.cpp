@@ -77,27 +77,28 @@ Profile extractProfile(const ZMap& map, double x0, double y0, double x1, double 
   return p;
 }
 
-RoughnessStats roughness(const Profile& profile, double cutoffMm, const char* where) {
-  RoughnessStats s;
-  s.cutoffMm = cutoffMm;
-  const double dt = profile.stepMm;
-  const int64_t n = int64_t(profile.height.size());
-  if (!(cutoffMm > 0) || !std::isfinite(cutoffMm))
-    throw InputError(where, "the cutoff wavelength must be a positive length in mm");
-  // ISO 16610-21 eq. (1): s(x) = exp(-pi (x / (alpha lc))^2) / (alpha lc).
+std::string RoughnessFilter::name() const {
+  std::ostringstream m;
+  m.precision(6);
+  if (cutoffMm > 0)
+    m << "ISO 16610-21 Gaussian, lc " << cutoffMm << " mm";
+  else
+    m << "unfiltered (primary profile less its least-squares line)";
+  if (lambdaSMm > 0)
+    m << ", ls " << lambdaSMm << " mm (Gaussian)";
+  else
+    m << ", no ls";
+  return m.str();
+}
+
+namespace {
+
+// The ISO 16610-21 Gaussian weights of cutoff `cutoffMm` at samples `dt` apart, truncated
+// at |x| <= cutoff and normalised to sum 1; `half` gets the kernel's half-width in samples.
+// eq. (1): s(x) = exp(-pi (x / (alpha lc))^2) / (alpha lc), alpha = sqrt(ln 2 / pi).
+std::vector<double> gaussianWeights(double cutoffMm, double dt, int64_t& half) {
   const double alpha = std::sqrt(std::log(2.0) / kPi);
-  const int64_t half = int64_t(std::floor(cutoffMm / dt + 1e-9));
-  const int64_t perLength = std::max<int64_t>(1, std::llround(cutoffMm / dt));
-  const int64_t valid = n - 2 * half;
-  const int64_t lengths = valid > 0 ? std::min<int64_t>(kMaxSamplingLengths, valid / perLength) : 0;
-  if (lengths < 1) {
-    std::ostringstream m;
-    m.precision(10);
-    m << "the profile is " << double(n - 1) * dt << " mm long; a cutoff of " << cutoffMm
-      << " mm needs at least " << 3 * cutoffMm
-      << " mm (run-in, one sampling length, run-out): lengthen the line or lower --cutoff";
-    throw InputError(where, m.str());
-  }
+  half = int64_t(std::floor(cutoffMm / dt + 1e-9));
   std::vector<double> w(size_t(2 * half + 1));
   double sum = 0;
   for (int64_t k = -half; k <= half; ++k) {
@@ -106,18 +107,133 @@ RoughnessStats roughness(const Profile& profile, double cutoffMm, const char* wh
     sum += w[size_t(k + half)];
   }
   for (double& v : w) v /= sum;
+  return w;
+}
 
+// The weighted mean of z round sample k (the kernel fits there).
+double filtered(const std::vector<double>& z, const std::vector<double>& w, int64_t half,
+                int64_t k) {
+  double mean = 0;
+  for (int64_t m = -half; m <= half; ++m) mean += w[size_t(m + half)] * z[size_t(k + m)];
+  return mean;
+}
+
+// z less its least-squares line over samples [first, first + count).
+void removeLine(std::vector<double>& z, int64_t first, int64_t count) {
+  double sx = 0, sz = 0, sxx = 0, sxz = 0;
+  for (int64_t k = 0; k < count; ++k) {
+    const double x = double(k), v = z[size_t(first + k)];
+    sx += x, sz += v, sxx += x * x, sxz += x * v;
+  }
+  const double n = double(count), det = n * sxx - sx * sx;
+  const double slope = det > 0 ? (n * sxz - sx * sz) / det : 0;
+  const double offset = (sz - slope * sx) / n;
+  for (int64_t k = 0; k < count; ++k) z[size_t(first + k)] -= offset + slope * double(k);
+}
+
+// Rsm over r[first, first + count), samples dt apart (the convention in the header).
+double meanElementWidth(const std::vector<double>& r, int64_t first, int64_t count, double dt,
+                        double rz, double samplingLengthMm) {
+  const double level = 0.1 * rz, minWidth = 0.01 * samplingLengthMm;
+  // state: 0 nothing yet, -1 a valley seen (r <= -level) since the last peak, +1 a peak.
+  int state = 0;
+  double crossing = NAN;  // the last upward crossing of the mean line after a valley
+  std::vector<double> bounds;
+  for (int64_t k = first; k < first + count; ++k) {
+    const double v = r[size_t(k)];
+    if (k > first) {
+      const double u = r[size_t(k - 1)];
+      if (state == -1 && u < 0 && v >= 0) crossing = (double(k - 1) + u / (u - v)) * dt;
+    }
+    if (v <= -level) {
+      state = -1;
+    } else if (v >= level && state == -1 && std::isfinite(crossing)) {
+      if (bounds.empty() || crossing - bounds.back() >= minWidth) bounds.push_back(crossing);
+      state = 1, crossing = NAN;
+    } else if (v >= level && state == 0) {
+      state = 1;
+    }
+  }
+  if (bounds.size() < 2) return NAN;
+  return (bounds.back() - bounds.front()) / double(bounds.size() - 1);
+}
+
+}  // namespace
+
+RoughnessStats roughness(const Profile& profile, double cutoffMm, const char* where) {
+  RoughnessFilter f;
+  f.cutoffMm = cutoffMm;
+  if (!(cutoffMm > 0) || !std::isfinite(cutoffMm))
+    throw InputError(where, "the cutoff wavelength must be a positive length in mm");
+  return roughness(profile, f, where);
+}
+
+RoughnessStats roughness(const Profile& profile, const RoughnessFilter& filter, const char* where) {
+  RoughnessStats s;
+  s.filter = filter;
+  s.cutoffMm = filter.cutoffMm;
+  const double dt = profile.stepMm, lc = filter.cutoffMm, ls = filter.lambdaSMm;
+  const int64_t n = int64_t(profile.height.size());
+  if (!(lc >= 0) || !std::isfinite(lc))
+    throw InputError(where,
+                     "the cutoff wavelength lc must be a positive length in mm, or 0 for "
+                     "the unfiltered profile");
+  if (!(ls >= 0) || !std::isfinite(ls) || (ls > 0 && ls < 2 * dt) || (lc > 0 && ls >= lc / 2)) {
+    std::ostringstream m;
+    m.precision(10);
+    m << "the short-wave cutoff ls (" << ls << " mm) must be 0 (none) or at least two sample "
+      << "steps (" << 2 * dt << " mm) and below lc / 2 (" << lc / 2 << " mm)";
+    throw InputError(where, m.str());
+  }
+
+  // The ls-smoothed profile where its kernel fits, z[k] for k in [lsHalf, n - lsHalf).
+  int64_t lsHalf = 0;
+  std::vector<double> z = profile.height;
+  if (ls > 0) {
+    const std::vector<double> w = gaussianWeights(ls, dt, lsHalf);
+    for (int64_t k = lsHalf; k < n - lsHalf; ++k)
+      z[size_t(k)] = filtered(profile.height, w, lsHalf, k);
+  }
+  const int64_t begin = lsHalf, end = n - lsHalf;  // valid samples of z
+
+  int64_t half = 0, perLength = 0, lengths = 0, valid = 0;
+  if (lc > 0) {
+    perLength = std::max<int64_t>(1, std::llround(lc / dt));
+    half = int64_t(std::floor(lc / dt + 1e-9));
+    valid = (end - begin) - 2 * half;
+    lengths = valid > 0 ? std::min<int64_t>(kMaxSamplingLengths, valid / perLength) : 0;
+  } else {
+    valid = end - begin;
+    perLength = valid;
+    lengths = valid >= 3 ? 1 : 0;
+  }
+  if (lengths < 1) {
+    std::ostringstream m;
+    m.precision(10);
+    m << "the profile is " << double(n - 1) * dt << " mm long; ";
+    if (lc > 0)
+      m << "a cutoff of " << lc << " mm needs at least " << 3 * lc + 2 * ls
+        << " mm (run-in, one sampling length, run-out" << (ls > 0 ? ", and ls at each end" : "")
+        << "): lengthen the line, lower --cutoff (ISO 4288: 0.08, 0.25, 0.8, 2.5, 8 mm) or "
+           "evaluate it unfiltered";
+    else
+      m << "the unfiltered profile needs at least 3 samples after ls's run-in and run-out";
+    throw InputError(where, m.str());
+  }
   s.samplingLengths = int(lengths);
   s.sampleCount = lengths * perLength;
-  s.firstSample = half + (valid - s.sampleCount) / 2;
+  s.firstSample = begin + half + (valid - s.sampleCount) / 2;
   s.evaluationStartMm = double(s.firstSample) * dt;
-  s.evaluationLengthMm = double(s.sampleCount) * dt;
+  s.evaluationLengthMm = double(s.sampleCount - (lc > 0 ? 0 : 1)) * dt;
+  s.samplingLengthMm = lc > 0 ? lc : s.evaluationLengthMm;
   s.roughness.assign(size_t(n), NAN);
-  for (int64_t k = half; k < n - half; ++k) {
-    double mean = 0;
-    for (int64_t m = -half; m <= half; ++m)
-      mean += w[size_t(m + half)] * profile.height[size_t(k + m)];
-    s.roughness[size_t(k)] = profile.height[size_t(k)] - mean;
+  if (lc > 0) {
+    const std::vector<double> w = gaussianWeights(lc, dt, half);
+    for (int64_t k = begin + half; k < end - half; ++k)
+      s.roughness[size_t(k)] = z[size_t(k)] - filtered(z, w, half, k);
+  } else {
+    for (int64_t k = begin; k < end; ++k) s.roughness[size_t(k)] = z[size_t(k)];
+    removeLine(s.roughness, begin, end - begin);
   }
 
   double sumAbs = 0, sumSq = 0, lo = HUGE_VAL, hi = -HUGE_VAL, rzSum = 0;
@@ -138,6 +254,7 @@ RoughnessStats roughness(const Profile& profile, double cutoffMm, const char* wh
   s.rq = std::sqrt(sumSq / double(s.sampleCount));
   s.rt = hi - lo;
   s.rz = rzSum / double(lengths);
+  s.rsm = meanElementWidth(s.roughness, s.firstSample, s.sampleCount, dt, s.rz, s.samplingLengthMm);
   return s;
 }
 

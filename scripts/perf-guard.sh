@@ -112,8 +112,14 @@ fi
 if [ -n "$against" ]; then
   rev=$(git rev-parse --verify "$against^{commit}") || { echo "perf-guard: no revision '$against'" >&2; exit 2; }
   git worktree add --detach "$work/rev" "$rev" >/dev/null 2>&1
-  # REV may predate the driver: its tree gets today's driver (the same workload).
-  echo "include($root/tests/benchmarks/perf_guard.cmake)" >>"$work/rev/CMakeLists.txt"
+  # REV gets today's driver (the same workload), included once: REV may predate it or
+  # already include its own copy.
+  if grep -q 'perf_guard.cmake' "$work/rev/CMakeLists.txt"; then
+    cp "$root/tests/benchmarks/perf_guard_main.cpp" "$root/tests/benchmarks/perf_guard.cmake" \
+      "$work/rev/tests/benchmarks/"
+  else
+    echo "include($root/tests/benchmarks/perf_guard.cmake)" >>"$work/rev/CMakeLists.txt"
+  fi
   # ccache then finds REV's objects again in the next run's temporary folder.
   export CCACHE_BASEDIR="$work"
   cmake -S "$work/rev" -B "$work/rev/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \

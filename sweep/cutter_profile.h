@@ -74,7 +74,12 @@ class CutterProfile {
   CutterProfile grown(double delta) const;
 
  private:
+  // A chain already known to be valid, with its arcs' centres: the derived values.
+  static CutterProfile fromChain(std::vector<ProfileSegment> chain);
+
   std::vector<ProfileSegment> segments_;
+  // Each segment's tangent angle from +rho towards +s at its start and end, radians.
+  std::vector<double> startAngle_, endAngle_;
   double fluteLength_ = 0, maxRadius_ = 0, bottomRadius_ = 0, reach_ = 0;
 };
 

@@ -119,7 +119,7 @@ bool tipPlanesClear(const PoseCurve& curve, const PoseFrame& f, double x, double
 FaceContact locateFaceContact(const Cutter& cutter, const PoseCurve& curve, double x, double y) {
   FaceContact out;
   const double rb = cutter.bottomRadius();
-  if (!(rb > 0)) return out;
+  if (cutter.general() || !(rb > 0)) return out;
   double t = 0.5;
   for (int step = 0; step < kFaceNewtonSteps; ++step) {
     const PoseFrame f = curve.frame(t);

@@ -41,6 +41,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sweep/profile_lowest_point.h"
+
 namespace scallop {
 
 namespace {
@@ -179,10 +181,16 @@ double IntervalBounds::grownCutter(const SearchSample& a, const SearchSample& b)
   const double grow = speed * 0.5 * w * (1 + 1e-12) + 1e-12;
   const Vec3 axis = curve_.axis(tc), tip = curve_.tip(tc) - axis * grow;
   // K (+) Ball(grow) lies in the cutter with R, r grown by `grow` and L by twice that,
-  // whose tip is `grow` lower along the axis (the same core, swept a ball wider).
-  Cutter grown = c_;
-  grown.radius += grow, grown.cornerRadius += grow, grown.fluteLength += 2 * grow;
-  const LowestPoint lp = cutterLowestPoint(grown, axis, x_ - tip.x, y_ - tip.y);
+  // whose tip is `grow` lower along the axis (the same core, swept a ball wider); for a
+  // general cutter it is the grown profile (CutterProfile::grown), in the same frame.
+  LowestPoint lp;
+  if (c_.general()) {
+    lp = profileLowestPoint(c_.profile->grown(grow), axis, x_ - tip.x, y_ - tip.y);
+  } else {
+    Cutter grown = c_;
+    grown.radius += grow, grown.cornerRadius += grow, grown.fluteLength += 2 * grow;
+    lp = cutterLowestPoint(grown, axis, x_ - tip.x, y_ - tip.y);
+  }
   if (!lp.hit) return HUGE_VAL;
   return lp.z + tip.z - 1e-12 * (1 + std::fabs(lp.z) + std::fabs(tip.z));
 }

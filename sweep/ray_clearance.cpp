@@ -210,13 +210,13 @@ bool clearsFrom(const Cutter& c, const PoseCurve& curve, const Vec3& q, double a
 bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double anchor, double t0,
                    double t1, bool* insideAtAnchor) {
   if (insideAtAnchor) *insideAtAnchor = false;
-  if (!(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
+  if (c.general() || !(c.cornerRadius > 0) || !(t0 <= anchor && anchor <= t1)) return false;
   return clearsFrom(c, curve, q, anchor, curve.tip(anchor), curve.axis(anchor),
                     curve.tipVelocity(anchor), curve.spin(anchor), t0, t1, insideAtAnchor);
 }
 
 bool raysClearMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, double radius) {
-  if (!(c.cornerRadius > 0) || !(radius >= 0)) return false;
+  if (c.general() || !(c.cornerRadius > 0) || !(radius >= 0)) return false;
   return clearsFrom(c, curve, q, 0.5, curve.tip(0.5), curve.axis(0.5), curve.tipVelocity(0.5),
                     curve.spin(0.5), 0, 1, nullptr, radius);
 }
@@ -224,7 +224,7 @@ bool raysClearMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, doubl
 bool rayClearsMove(const Cutter& c, const PoseCurve& curve, const Vec3& q, const PoseFrame& anchor,
                    double t0, double t1, bool* insideAtAnchor) {
   if (insideAtAnchor) *insideAtAnchor = false;
-  if (!(c.cornerRadius > 0) || !(t0 <= anchor.t && anchor.t <= t1)) return false;
+  if (c.general() || !(c.cornerRadius > 0) || !(t0 <= anchor.t && anchor.t <= t1)) return false;
   return clearsFrom(c, curve, q, anchor.t, anchor.tip, anchor.axis, anchor.velocity, anchor.spin,
                     t0, t1, insideAtAnchor);
 }
@@ -239,6 +239,8 @@ double lowestPointCurvature(const Cutter& c, const PoseCurve& curve, double t, c
   // sample, gamma' = -tip' - Omega x u, gamma'' = Omega x (Omega x u) - Omega' x u +
   // 2 Omega x tip' - tip'' for u = p - tip(t) (tip'' left out: it is 0 for a linear tip,
   // and this only chooses where to sample).
+  // The core and its radius r are those of ball, flat and bull cutters.
+  if (c.general()) return std::numeric_limits<double>::quiet_NaN();
   const Vec3 tip = curve.tip(t);
   const CoreDistance core{c.bottomRadius(), c.cornerRadius, c.fluteLength, curve.axis(t)};
   const Vec3 u = p - tip, delta = curve.tipVelocity(t);

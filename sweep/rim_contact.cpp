@@ -143,7 +143,7 @@ RimSensitivity sensitivityAt(const Local& L, bool ball, bool atEnd) {
 RimContact locateRimContact(const Cutter& cutter, const PoseCurve& curve, double x, double y,
                             const RimStart& start, RimSensitivity* sensitivity) {
   RimContact out;
-  if (!(cutter.cornerRadius > 0)) return out;
+  if (cutter.general() || !(cutter.cornerRadius > 0)) return out;
   const bool ball = !(cutter.bottomRadius() > 0);  // phi plays no part
   double t = std::clamp(start.t, 0.0, 1.0);
   // phi is carried as the unit vector (cos phi, sin phi): a step d phi moves it along its

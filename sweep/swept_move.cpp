@@ -66,7 +66,7 @@ SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
       curve_(curve),
       reach_(std::hypot(cutter.fluteLength, cutter.radius)),
       knotSpacing_(kContactKnotSpacing) {
-  if (curve_.constantAxis())
+  if (curve_.constantAxis() && !cutter.general())
     segment_ = std::make_shared<const SweptSegment>(cutter, curve_.tipStart(), curve_.tipEnd(),
                                                     curve_.axis(0));
   else
@@ -128,7 +128,7 @@ LowestPoint SweptMove::planeHint(double x, double y) const {
 }
 
 LowestPoint SweptMove::locatedPlaneHint(double x, double y, double tStart) const {
-  if (segment_ || !(cutter_.cornerRadius > 0)) return planeHint(x, y);
+  if (segment_ || cutter_.general() || !(cutter_.cornerRadius > 0)) return planeHint(x, y);
   RimStart start;
   start.t = tStart;
   const RimContact rim = locateRimContact(cutter_, curve_, x, y, start);
@@ -170,8 +170,9 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
     return {};
   // Where the rim contact is expected (contact_knots.h): the anchor of step 4a's proof
   // and the start of step 6's Newton.
-  const RimStart start =
-      c.cornerRadius > 0 ? contactStart(knotsId_, knotSpacing_, c, curve_, x, y) : RimStart{};
+  const RimStart start = !c.general() && c.cornerRadius > 0
+                             ? contactStart(knotsId_, knotSpacing_, c, curve_, x, y)
+                             : RimStart{};
   // Step 7: the bottom face (face_contact.h), located and proven in closed form. First
   // where the knots round the line found no rim contact (B3: most face lines), else
   // after the rim contact.
@@ -184,7 +185,8 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
     return true;
   };
   LowestPoint out;
-  if (c.bottomRadius() > 0 && !start.hasDirection && face(out)) return out;
+  const bool faceContact = !c.general() && c.bottomRadius() > 0;
+  if (faceContact && !start.hasDirection && face(out)) return out;
   // Step 4a: a move the ray-clearance proof puts above the cutoff is a miss, found
   // without a single stationary search (ray_clearance.h). Not after the caller's anchor
   // failed: such a neighbour loses by nanometres if at all, and from the knots' anchor
@@ -206,7 +208,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
   // clearance: on corner contacts (every bull and ball on CAM paths) no stationary
   // search at all. Where Newton stops or the proof fails (flat faces, flanks, a line
   // leaving the cutter), the face or the certified search (certified_search.h) decides.
-  if (c.cornerRadius > 0) {
+  if (!c.general() && c.cornerRadius > 0) {
     RimContact rim = locateRimContact(c, curve_, x, y, start);
     // A knots' start too far for Newton (coarse knots, a contact that jumps between
     // them): once more from the middle.
@@ -217,7 +219,7 @@ LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
       return out;
     }
   }
-  if (c.bottomRadius() > 0 && !faceTried && face(out)) return out;
+  if (faceContact && !faceTried && face(out)) return out;
   return certifiedLowestPoint(c, curve_, {reach_, zTop_, tipSpeed_}, x, y, cutoff);
 }
 

@@ -36,6 +36,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sweep/profile_lowest_point.h"
+
 namespace scallop {
 
 namespace {
@@ -116,6 +118,7 @@ SupportWithSlope supportWithSlope(const Cutter& c, const Vec3& a, const Vec3& v,
 }  // namespace
 
 Vec3 cutterSupport(const Cutter& c, const Vec3& a, const Vec3& dir) {
+  if (c.general()) return profileSupport(*c.profile, a, dir);
   return supportWithSlope(c, a, dir, Vec3{}).point;
 }
 
@@ -268,6 +271,7 @@ LowestPoint lowestPointOfCutter(const Cutter& c, const Vec3& a, double zMin, dou
 }  // namespace
 
 LowestPoint cutterLowestPoint(const Cutter& c, const Vec3& a, double x, double y, double zBelow) {
+  if (c.general()) return profileLowestPoint(*c.profile, a, x, y, zBelow);
   return lowestPointOfCutter(c, a, cutterSupport(c, a, Vec3{0, 0, -1}).z, x, y, zBelow);
 }
 
@@ -491,7 +495,15 @@ LowestPoint SweptSegment::lowestPoint(double x, double y) const {
   return lowestPoint(x, y, nullptr);
 }
 
-LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, double cutoff) const {
+// Inlined into SweptMove::envelopeLowestPoint (the same unity unit), the constant-axis
+// cell's one call: GCC's heuristics dropped it once the Cutter grew a profile pointer, for
+// 4 % more instructions a cell on B1 (scripts/perf-guard.sh). Other callers get the usual
+// out-of-line copy, which is what the attribute's warning is about.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wattributes"
+__attribute__((always_inline)) LowestPoint SweptSegment::lowestPoint(double x, double y,
+                                                                     SectionMemo* memo,
+                                                                     double cutoff) const {
   const double qx = x - start_.x, qy = y - start_.y;
 
   // A plunge, a retract or a zero-length move: the cutter slides along l itself.
@@ -543,5 +555,7 @@ LowestPoint SweptSegment::lowestPoint(double x, double y, SectionMemo* memo, dou
   out.normal = sec.normal;
   return out;
 }
+
+#pragma GCC diagnostic pop
 
 }  // namespace scallop

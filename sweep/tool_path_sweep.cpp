@@ -63,13 +63,20 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       throw InputError(where,
                        "the teeth cutting model needs a feed per tooth: set "
                        "cutting.feed_per_tooth in the job (or F and S in the program)");
+    if (teeth && cutters[mv.tool].general())
+      throw InputError(where, std::string("the teeth cutting model supports ball, flat and bull "
+                                          "cutters; tool ") +
+                                  std::to_string(mv.tool) + " is a " +
+                                  toString(cutters[mv.tool].type) +
+                                  " cutter (use the envelope model)");
     const Cutter cutter = teeth ? cutters[mv.tool].spindleEnvelope() : cutters[mv.tool];
     const PoseCurve curve = PoseCurve::ofMove(path, mv, where.c_str());
     if (teeth && !curve.linearTip())
       throw InputError(where,
                        "the teeth cutting model needs a straight tip motion; TCP-off machine "
                        "moves (G49) are not supported with teeth");
-    if (curve.constantAxis()) {
+    // A general cutter sweeps every move through SweptMove's certified search.
+    if (curve.constantAxis() && !cutter.general()) {
       const Vec3 axis = curve.axis(0);
       if (!out.empty() && continues(out.back(), curve.tipStart(), curve.tipEnd(), axis, cutter) &&
           (!teeth || spindle.back().radPerMm == radPerMm)) {

@@ -108,5 +108,127 @@ TEST(ProfileMetrology, TooShortProfilesAndBadCutoffsAreRefused) {
   EXPECT_LT(ok.rt, 1e-12);
 }
 
+// A profile made directly (no map), samples `step` apart.
+Profile syntheticProfile(double lengthMm, double step, const std::function<double(double)>& z) {
+  Profile p{0, 0, lengthMm, 0, step, {}};
+  const int64_t n = int64_t(std::floor(lengthMm / step + 1e-9)) + 1;
+  for (int64_t k = 0; k < n; ++k) p.height.push_back(z(double(k) * step));
+  return p;
+}
+
+// Unfiltered cosine on a tilt over whole periods: x cos(kx) sums to 0 over them, so the
+// least-squares line is the tilt and r is the cosine. By hand, with M samples a period,
+// N = 40 M intervals and the samples k = 0..N (the last one a crest again): the sum of
+// cos^2 is N/2 + 1 and of |cos| is N (2/M) cot(pi/M) + 1 (|cos| at M/4 | M samples is
+// |sin| shifted), so Ra and Rq follow; Rz = Rt = 2A (one sampling length: the whole
+// profile); Rsm = the wavelength (the upward crossings are a wavelength apart).
+TEST(ProfileMetrology, UnfilteredCosineByHand) {
+  const double amp = 0.003, wavelength = 0.4, step = 0.0005, length = 40 * wavelength;
+  const Profile p = syntheticProfile(
+      length, step, [&](double x) { return 0.02 * x + amp * std::cos(2 * kPi * x / wavelength); });
+  RoughnessFilter none;
+  none.cutoffMm = 0;
+  const RoughnessStats r = roughness(p, none, "--cutoff");
+  EXPECT_EQ(r.samplingLengths, 1);
+  EXPECT_NEAR(r.evaluationLengthMm, length, 1e-9);
+  const double M = wavelength / step, N = 40 * M;
+  // The extra crest leaves the samples' own least-squares line an offset and tilt of
+  // order A / N (one sample of N + 1), which bounds the difference.
+  const double tol = amp / N;
+  EXPECT_NEAR(r.ra, amp * (N * (2 / M) / std::tan(kPi / M) + 1) / (N + 1), tol);
+  EXPECT_NEAR(r.rq, amp * std::sqrt((N / 2 + 1) / (N + 1)), tol);
+  EXPECT_NEAR(r.rt, 2 * amp, 2 * tol);
+  EXPECT_EQ(r.rz, r.rt);
+  EXPECT_NEAR(r.rsm, wavelength, 1e-9);
+  EXPECT_NE(r.filter.name().find("unfiltered"), std::string::npos);
+}
+
+// A sawtooth of period P rising from -A to +A: Ra = A/2, Rq = A/sqrt(3), Rt = Rz = 2A,
+// Rsm = P, by hand. Filtered with lc = 1 mm = 10 P the mean line is flat (transmission
+// 2^-100 at P). Unfiltered, the least-squares line of N whole teeth over L = N P has
+// slope 2AP/L^2 (x times the tooth integrates to AP^2/6 a tooth; var x = L^2/12): it
+// tilts r by up to AP/L at the ends and moves the crossings by up to P^2/(2L), which is
+// what the unfiltered tolerances are. (Unfiltered, the sampling length is the whole
+// 8 mm, so Rsm's width discrimination is 0.08 mm: below P.)
+TEST(ProfileMetrology, SawtoothByHandUnfilteredAndFiltered) {
+  const double amp = 0.004, period = 0.1, step = 0.0001, length = 8.0;
+  auto tooth = [&](double x) {
+    const double f = x / period - std::floor(x / period);
+    return amp * (2 * f - 1);
+  };
+  // Offset by half a step so no sample sits on a drop.
+  const Profile p = syntheticProfile(length, step, [&](double x) { return tooth(x + step / 2); });
+  RoughnessFilter none;
+  none.cutoffMm = 0;
+  RoughnessFilter gauss;
+  gauss.cutoffMm = 1.0;
+  const double sampling = 2 * amp * step / period;  // one sample's rise
+  const double tilt = amp * period / length;
+  for (const RoughnessFilter& f : {none, gauss}) {
+    const RoughnessStats r = roughness(p, f, "--cutoff");
+    const bool filtered = f.cutoffMm > 0;
+    const double heightTol = sampling + (filtered ? 1e-6 * amp : tilt);
+    EXPECT_NEAR(r.ra, amp / 2, heightTol) << f.name();
+    EXPECT_NEAR(r.rq, amp / std::sqrt(3.0), heightTol) << f.name();
+    EXPECT_NEAR(r.rt, 2 * amp, 2 * heightTol) << f.name();
+    EXPECT_NEAR(r.rz, 2 * amp, 2 * heightTol) << f.name();
+    const double widthTol = filtered ? 1e-9 : period * period / (2 * length);
+    EXPECT_NEAR(r.rsm, period, widthTol) << f.name();
+  }
+  EXPECT_EQ(roughness(p, gauss, "--cutoff").samplingLengths, 5);
+}
+
+// Rsm's height discrimination: a ripple of 5 % of the amplitude (below 10 % of Rz) adds
+// no elements.
+TEST(ProfileMetrology, RsmIgnoresARippleBelowTheHeightDiscrimination) {
+  const double amp = 0.002, wavelength = 0.25, ripple = 0.01, step = 0.0005;
+  const Profile p = syntheticProfile(10.0, step, [&](double x) {
+    return amp * std::sin(2 * kPi * x / wavelength) + 0.05 * amp * std::sin(2 * kPi * x / ripple);
+  });
+  const RoughnessStats r = roughness(p, 0.8, "--cutoff");
+  EXPECT_NEAR(r.rsm, wavelength, 1e-3 * wavelength);
+}
+
+// The lambda-s filter is the Gaussian low-pass: a sine of wavelength l keeps
+// T(l) = exp(-pi (alpha ls / l)^2) of its amplitude (alpha^2 = ln 2 / pi), so
+// Rq = sqrt((A T(l1))^2 + (B T(l2))^2 / 2) for two sines far below lc.
+TEST(ProfileMetrology, LambdaSAttenuatesByTheGaussianTransmission) {
+  const double a = 0.002, l1 = 0.25, b = 0.001, l2 = 0.02, step = 0.0005, ls = 0.025;
+  const Profile p = syntheticProfile(12.0, step, [&](double x) {
+    return a * std::sin(2 * kPi * x / l1) + b * std::sin(2 * kPi * x / l2);
+  });
+  RoughnessFilter f;
+  f.cutoffMm = 2.5;
+  f.lambdaSMm = ls;
+  const RoughnessStats r = roughness(p, f, "--lambda-s");
+  auto T = [&](double l) { return std::exp(-std::log(2.0) * (ls / l) * (ls / l)); };
+  const double want = std::sqrt((a * T(l1) * a * T(l1) + b * T(l2) * b * T(l2)) / 2);
+  // lc = 2.5 mm passes l1 = 0.25 mm with 1 - 2^-100; the sum of sin^2 over the
+  // evaluation length (not whole periods of both) is N/2 within 1e-3.
+  EXPECT_NEAR(r.rq, want, 2e-3 * want);
+  EXPECT_NE(r.filter.name().find("ls 0.025"), std::string::npos);
+  EXPECT_EQ(r.samplingLengths, 2);  // 12 mm - 2 (2.5 + 0.025) mm run-in/out: 2 lengths
+}
+
+TEST(ProfileMetrology, BadFiltersAreRefusedWithTheirReason) {
+  const Profile p = syntheticProfile(3.0, 0.001, [](double x) { return std::sin(x); });
+  RoughnessFilter f;
+  f.cutoffMm = 0.8;
+  f.lambdaSMm = 0.0015;  // under two sample steps
+  EXPECT_THROW(roughness(p, f, "--lambda-s"), InputError);
+  f.lambdaSMm = 0.5;  // not below lc / 2
+  EXPECT_THROW(roughness(p, f, "--lambda-s"), InputError);
+  f.lambdaSMm = 0;
+  f.cutoffMm = 2.5;  // 3 mm < 3 lc
+  try {
+    roughness(p, f, "--cutoff");
+    ADD_FAILURE() << "accepted a 3 mm profile for lc 2.5 mm";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "--cutoff");
+    EXPECT_NE(std::string(e.what()).find("7.5 mm"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("unfiltered"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace scallop

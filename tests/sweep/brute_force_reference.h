@@ -25,18 +25,22 @@
 #include <utility>
 #include <vector>
 
-#include "sweep/cutter.h"
 #include "base/vec3.h"
+#include "sweep/cutter.h"
 
 namespace scallop {
 namespace ref {
 
 // Cutter parameters as the definition uses them: ball r = R, flat r = 0.
 struct RefCutter {
-  double R = 0;  // radius, mm
+  double R = 0;  // radius, mm (a general profile: its largest width)
   double r = 0;  // corner radius, mm
   double L = 0;  // flute length, mm
   double Rb() const { return R - r; }
+  // A cutter of any convex profile (CONVENTIONS.md "Cutter shapes"): its width w(s) for
+  // s in [0, L], written by the test from the definition of its chain
+  // (tests/sweep/profile_cases.h); empty for ball, flat and bull. prof(s) is then w(s).
+  std::function<double(double)> width = {};
 };
 
 // `cornerRadius` is used for bull only; `fluteLength` <= 0 means 4 R.
@@ -44,6 +48,7 @@ RefCutter makeRefCutter(CutterType type, double radius, double cornerRadius = 0,
                         double fluteLength = 0);
 
 // prof(s): radius of the solid at height s along the axis; only for 0 <= s <= L.
+// Concave in s for every cutter, which the searches below rely on.
 double profile(const RefCutter& c, double s);
 
 // Point-in-solid test straight from the definition, for the cutter with its tip at

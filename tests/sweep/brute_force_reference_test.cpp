@@ -105,6 +105,7 @@ RefCutter makeRefCutter(CutterType type, double radius, double cornerRadius, dou
 }
 
 double profile(const RefCutter& c, double s) {
+  if (c.width) return c.width(s);
   if (s < c.r) return c.Rb() + std::sqrt(std::max(0.0, s * (2 * c.r - s)));  // = r^2-(r-s)^2
   return c.R;
 }

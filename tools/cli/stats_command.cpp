@@ -26,8 +26,8 @@ struct StatsArgs {
   std::string file;
   std::vector<double> region, profile;
   std::string level = "plane";
-  double cutoffMm = 0.8, stepMm = 0;
-  bool json = false;
+  double cutoffMm = 0.8, lambdaSMm = 0, stepMm = 0;
+  bool unfiltered = false, json = false;
 };
 
 int runStats(const StatsArgs& args) {
@@ -39,8 +39,13 @@ int runStats(const StatsArgs& args) {
   doc["file"] = args.file;
   std::optional<ProfileRoughness> profile;
   if (!args.profile.empty()) {
-    profile =
-        profileRoughness(map, args.profile, args.stepMm, args.cutoffMm, "--profile", "--cutoff");
+    RoughnessFilter filter;
+    filter.cutoffMm = args.unfiltered ? 0 : args.cutoffMm;
+    filter.lambdaSMm = args.lambdaSMm;
+    if (!args.unfiltered && !(args.cutoffMm > 0))
+      throw InputError("--cutoff", "must be a positive length in mm (use --unfiltered for none)");
+    profile = profileRoughness(map, args.profile, args.stepMm, filter, "--profile",
+                               args.lambdaSMm > 0 ? "--lambda-s" : "--cutoff");
     doc["profile"] = profileRoughnessDocument(*profile);
   }
   if (args.json) {
@@ -63,10 +68,14 @@ int runStats(const StatsArgs& args) {
     const Profile& l = profile->profile;
     const RoughnessStats& rough = profile->roughness;
     std::printf(
-        "profile (%g, %g) -> (%g, %g) mm, cutoff %g mm, %d sampling lengths:\n"
-        "  Ra = %.6g mm\n  Rq = %.6g mm\n  Rz = %.6g mm\n  Rt = %.6g mm\n",
-        l.x0, l.y0, l.x1, l.y1, rough.cutoffMm, rough.samplingLengths, rough.ra, rough.rq, rough.rz,
-        rough.rt);
+        "profile (%g, %g) -> (%g, %g) mm; filter: %s;\n"
+        "  evaluation length %g mm from %g mm along the line, %d sampling length(s) of %g mm:\n"
+        "  Ra  = %.6g mm\n  Rq  = %.6g mm\n  Rz  = %.6g mm\n  Rt  = %.6g mm\n  Rsm = %s\n",
+        l.x0, l.y0, l.x1, l.y1, rough.filter.name().c_str(), rough.evaluationLengthMm,
+        rough.evaluationStartMm, rough.samplingLengths, rough.samplingLengthMm, rough.ra, rough.rq,
+        rough.rz, rough.rt,
+        std::isfinite(rough.rsm) ? fmt::format("{:.6g} mm", rough.rsm).c_str()
+                                 : "none (fewer than two profile elements)");
   }
   return 0;
 }
@@ -81,8 +90,11 @@ Command addStatsCommand(CLI::App& parent, CommonOptions& common) {
       "scallop (FILE.gsf or FILE.exr), over the whole map or a --region, after least-squares\n"
       "plane levelling (default) or none (heights from the mean). Sku is the plain kurtosis\n"
       "(3 for a Gaussian surface; Gwyddion shows the excess, Sku - 3). With --profile, also\n"
-      "Ra, Rq, Rz, Rt of the line's roughness profile: ISO 16610-21 Gaussian filter of\n"
-      "cutoff --cutoff, up to 5 sampling lengths (ISO 4288), run-in/out of one cutoff each.\n"
+      "Ra, Rq, Rz, Rt, Rsm (ISO 4287 / 21920-2) of the line's roughness profile: ISO 16610-21\n"
+      "Gaussian filter of cutoff --cutoff (lc), optionally --lambda-s (ls), up to 5 sampling\n"
+      "lengths (ISO 4288), run-in/out of one cutoff each; or --unfiltered: the profile less\n"
+      "its least-squares line, one sampling length (feed marks as a ruler measures them).\n"
+      "The output names the filter, the evaluation length and the sampling lengths.\n"
       "Cell (i, j) is one sample at its centre. Lengths in mm.");
   app->add_option("FILE", args->file, "Height map: .gsf (Gwyddion Simple Field) or .exr")
       ->required();
@@ -102,6 +114,11 @@ Command addStatsCommand(CLI::App& parent, CommonOptions& common) {
                   "Gaussian filter cutoff lc, mm (ISO 4288: 0.08, 0.25, 0.8, 2.5 or 8 for Ra\n"
                   "up to 0.02, 0.1, 2, 10, 80 um)")
       ->capture_default_str();
+  app->add_option("--lambda-s", args->lambdaSMm,
+                  "Short-wave Gaussian cutoff ls, mm (ISO 3274: 0.0025 or 0.008); default none:\n"
+                  "a z-map is already sampled at its grid spacing");
+  app->add_flag("--unfiltered", args->unfiltered,
+                "No lc filter: Ra ... Rsm of the profile less its least-squares line");
   app->add_option("--step", args->stepMm, "Profile sample spacing, mm (default: grid spacing)");
   addThreadsOption(*app, common);
   app->add_flag("--json", args->json, "Print one JSON document on stdout (and nothing else)");

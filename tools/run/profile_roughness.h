@@ -23,11 +23,12 @@ struct ProfileRoughness {
 Profile lineProfile(const ZMap& map, const std::vector<double>& line, double stepMm,
                     const char* lineField);
 
-// That profile and its roughness for the Gaussian cutoff `cutoffMm`. InputError
-// naming `lineField` for a line off the map or of the wrong size, `cutoffField` for a
-// cutoff the profile is too short for.
+// That profile and its roughness with `filter` (analysis/profile_metrology.h). InputError
+// naming `lineField` for a line off the map or of the wrong size, `filterField` for
+// filters the profile is too short for or that do not fit its sampling.
 ProfileRoughness profileRoughness(const ZMap& map, const std::vector<double>& line, double stepMm,
-                                  double cutoffMm, const char* lineField, const char* cutoffField);
+                                  const RoughnessFilter& filter, const char* lineField,
+                                  const char* filterField);
 
 // The "profile" block of `scallop stats --json`.
 nlohmann::json profileRoughnessDocument(const ProfileRoughness& p);

@@ -104,10 +104,26 @@ TEST_F(StatsCli, RegionLevelAndProfile) {
   EXPECT_GT(p["Rz_mm"].get<double>(), 0);
   EXPECT_GE(p["Rt_mm"].get<double>(), p["Rz_mm"].get<double>());
   EXPECT_GE(p["Rq_mm"].get<double>(), p["Ra_mm"].get<double>());
-  // Human output names the convention.
-  const CliRun human = run("stats " + path("out/heights.gsf"));
+  EXPECT_NE(p["filter"].get<std::string>().find("lc 0.8 mm"), std::string::npos);
+  EXPECT_NEAR(p["sampling_length_mm"].get<double>(), 0.8, 1e-12);
+  // Unfiltered: one sampling length, the whole line; Rz = Rt.
+  const json u = stats(path("out/heights.gsf") + " --profile 0.5 0.02 0.5 4.98 --unfiltered");
+  EXPECT_NE(u["profile"]["filter"].get<std::string>().find("unfiltered"), std::string::npos);
+  EXPECT_EQ(u["profile"]["sampling_lengths"], 1);
+  EXPECT_NEAR(u["profile"]["evaluation_length_mm"].get<double>(), 4.96, 1e-9);
+  EXPECT_EQ(u["profile"]["Rz_mm"], u["profile"]["Rt_mm"]);
+  // Human output names the convention, the filter and the lengths.
+  const CliRun human = run("stats " + path("out/heights.gsf") +
+                           " --profile 0.5 0.02 0.5 4.98 --cutoff 0.8 --lambda-s 0.08");
   EXPECT_EQ(human.status, 0);
   EXPECT_NE(human.out.find("plain kurtosis"), std::string::npos);
+  EXPECT_NE(human.out.find("ls 0.08 mm"), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("sampling length(s) of 0.8 mm"), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("Rsm"), std::string::npos);
+  // A short-wave cutoff under two samples (the grid is 0.04 mm) is refused naming it.
+  expectFailure(
+      "stats " + path("out/heights.gsf") + " --profile 0.5 0.02 0.5 4.98 --lambda-s 0.05 --json", 1,
+      "--lambda-s");
 }
 
 TEST_F(StatsCli, FilesThatAreNotHeightMapsExit1) {
