@@ -29,6 +29,6 @@ draw oval "oval d8 R12 r1.5" \
 draw lens "lens d10 R12 r1" \
   '{"type": "lens", "diameter": 10, "form_radius": 12, "corner_radius": 1, "flute_length": 8}'
 draw profile "profile" \
-  '{"type": "profile", "segments": [{"to": [1.5, 0]}, {"to": [2.5, 1], "arc_radius": 1}, {"to": [3, 6]}, {"to": [3, 10]}]}'
+  '{"type": "profile", "segments": [{"to": [1, 0]}, {"to": [1.7071067811865475, 0.2928932188134524], "arc_radius": 1}, {"to": [2.5, 1.2]}, {"to": [3, 10]}]}'
 draw apt "APT CUTTER/6,1,2,2.309,30,0,10" \
   '{"type": "apt", "d": 6, "r": 1, "e": 2, "f": 2.3094010767585, "a": 30, "b": 0, "h": 10}'
