@@ -34,5 +34,6 @@ Command addMergeCommand(CLI::App& parent, CommonOptions& common);
 Command addStatsCommand(CLI::App& parent, CommonOptions& common);
 Command addExportCommand(CLI::App& parent, CommonOptions& common);
 Command addCollectCommand(CLI::App& parent, CommonOptions& common);
+Command addCutterCommand(CLI::App& parent, CommonOptions& common);
 
 }  // namespace scallop

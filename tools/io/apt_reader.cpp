@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "base/input_error.h"
+#include "sweep/apt_cutter.h"
+#include "sweep/cutter_shapes.h"
 
 namespace scallop {
 
@@ -155,37 +157,30 @@ class AptParser {
     if (n != 1 && n != 2 && n != 7)
       throw InputError(where_,
                        fmt::format("CUTTER expects d, d,r or d,r,e,f,a,b,h; got {} values", n));
-    std::vector<double> v;
-    for (size_t k = 0; k < n; ++k) v.push_back(number(st.args[k], "CUTTER value") * scale_);
-    const double radius = v[0] / 2, corner = n >= 2 ? v[1] : 0;
-    double flute = 0;
+    std::vector<double> raw, v;
+    for (size_t k = 0; k < n; ++k) raw.push_back(number(st.args[k], "CUTTER value"));
+    for (double value : raw) v.push_back(value * scale_);
+    Cutter c;
     if (n == 7) {
-      // APT's generalized cutter: a torus end mill has e = d/2 - r, f = r, a = b = 0.
-      const double tol = 1e-9 * std::max(1.0, radius);
-      if (std::fabs(v[2] - (radius - corner)) > tol || std::fabs(v[3] - corner) > tol ||
-          v[4] != 0 || v[5] != 0)
-        throw InputError(where_,
-                         "only end mills are supported: CUTTER/d,r,e,f,a,b,h needs e = d/2 - r, "
-                         "f = r, a = b = 0");
-      flute = v[6];
-      if (!(flute > 0)) throw InputError(where_, "CUTTER height h must be > 0 mm");
+      // APT's generalized cutter (CONVENTIONS.md "Cutter shapes"); a and b are degrees.
+      const AptCutterValues apt{v[0], v[1], v[2], v[3], raw[4], raw[5], v[6]};
+      c = aptCutter(apt, where_ + ": CUTTER");
+    } else {
+      const double radius = v[0] / 2, corner = n >= 2 ? v[1] : 0;
+      if (!(radius > 0)) throw InputError(where_, "CUTTER diameter must be > 0 mm");
+      if (corner < 0 || corner > radius)
+        throw InputError(where_, fmt::format("CUTTER corner radius must be in [0, d/2 = {:g}] mm, "
+                                             "got {:g}",
+                                             radius, corner));
+      const CutterType type = corner == 0        ? CutterType::Flat
+                              : corner == radius ? CutterType::Ball
+                                                 : CutterType::Bull;
+      c = Cutter::make(type, radius, corner, 0, where_ + ": CUTTER");
     }
-    if (!(radius > 0)) throw InputError(where_, "CUTTER diameter must be > 0 mm");
-    if (corner < 0 || corner > radius)
-      throw InputError(where_, fmt::format("CUTTER corner radius must be in [0, d/2 = {:g}] mm, "
-                                           "got {:g}",
-                                           radius, corner));
-    const CutterType type = corner == 0        ? CutterType::Flat
-                            : corner == radius ? CutterType::Ball
-                                               : CutterType::Bull;
-    const Cutter c = Cutter::make(type, radius, corner, flute, where_ + ": CUTTER");
     if (!out_.cutter) out_.cutter = c;
     if (!options_.tools.empty()) return;  // LOADTL picks the job's cutter
     // A new cutter is a new tool for the moves after it (the first serves those before).
-    auto same = [&](const Cutter& o) {
-      return o.type == c.type && o.radius == c.radius && o.cornerRadius == c.cornerRadius &&
-             o.fluteLength == c.fluteLength;
-    };
+    auto same = [&](const Cutter& o) { return sameShape(o, c); };
     const auto it = std::find_if(cutters_.begin(), cutters_.end(), same);
     tool_ = uint16_t(it - cutters_.begin());
     if (it == cutters_.end()) {

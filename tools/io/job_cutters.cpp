@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "base/input_error.h"
+#include "tools/io/job_cutter_shapes.h"
 #include "tools/io/job_fields.h"
 
 namespace scallop {
@@ -12,25 +14,36 @@ using nlohmann::json;
 using namespace jobfield;
 
 Cutter parseCutter(const json& tool, const std::string& f) {
-  rejectUnknownKeys(tool,
-                    {"type", "radius", "corner_radius", "flute_length", "flutes", "helix_deg",
-                     "runout_mm", "runout_phase_deg"},
-                    f);
-  const CutterType type = parseCutterType(text(tool, "type", f + ".type"), f + ".type");
-  const double zero = 0;
-  const double radius = number(tool, "radius", f + ".radius");
-  double corner = 0;
-  if (type == CutterType::Bull) {
-    corner = number(tool, "corner_radius", f + ".corner_radius");
-  } else if (tool.contains("corner_radius")) {
-    throw InputError(f + ".corner_radius",
-                     std::string("only a bull cutter takes a corner radius (a ") + toString(type) +
-                         " cutter's is fixed)");
+  static const std::set<std::string> teethKeys = {"flutes", "helix_deg", "runout_mm",
+                                                  "runout_phase_deg"};
+  const std::string typeName = text(tool, "type", f + ".type");
+  Cutter cutter;
+  if (shapedCutterTypeNames().count(typeName)) {
+    cutter = parseShapedCutter(tool, typeName, teethKeys, f);
+  } else {
+    if (typeName != "ball" && typeName != "flat" && typeName != "bull")
+      throw InputError(f + ".type", "unknown cutter type \"" + typeName +
+                                        "\", expected ball, flat, bull, taper_ball, taper_bull, "
+                                        "cone, barrel, taper_barrel, oval, lens, profile or apt");
+    std::set<std::string> keys = {"type", "radius", "corner_radius", "flute_length"};
+    keys.insert(teethKeys.begin(), teethKeys.end());
+    rejectUnknownKeys(tool, keys, f);
+    const CutterType type = parseCutterType(typeName, f + ".type");
+    const double zero = 0;
+    const double radius = number(tool, "radius", f + ".radius");
+    double corner = 0;
+    if (type == CutterType::Bull) {
+      corner = number(tool, "corner_radius", f + ".corner_radius");
+    } else if (tool.contains("corner_radius")) {
+      throw InputError(f + ".corner_radius",
+                       std::string("only a bull cutter takes a corner radius (a ") +
+                           toString(type) + " cutter's is fixed)");
+    }
+    const double flute = number(tool, "flute_length", f + ".flute_length", &zero);
+    if (tool.contains("flute_length") && flute <= 0)
+      throw InputError(f + ".flute_length", "must be > 0 mm");
+    cutter = Cutter::make(type, radius, corner, flute, f);
   }
-  const double flute = number(tool, "flute_length", f + ".flute_length", &zero);
-  if (tool.contains("flute_length") && flute <= 0)
-    throw InputError(f + ".flute_length", "must be > 0 mm");
-  Cutter cutter = Cutter::make(type, radius, corner, flute, f);
   // The teeth: the types checked here, the ranges in CutterTeeth::make (one place).
   const CutterTeeth defaults;
   const int64_t flutes = wholeNumber(tool, "flutes", f + ".flutes", defaults.flutes, "teeth");
@@ -85,10 +98,13 @@ const char* toString(CuttingModelKind kind) {
 }
 
 json cutterToJson(const Cutter& c) {
-  return {{"type", toString(c.type)},        {"radius", c.radius},
-          {"corner_radius", c.cornerRadius}, {"flute_length", c.fluteLength},
-          {"flutes", c.teeth.flutes},        {"helix_deg", c.teeth.helixDeg},
-          {"runout_mm", c.teeth.runout},     {"runout_phase_deg", c.teeth.runoutPhaseDeg}};
+  json j = {{"type", toString(c.type)},        {"radius", c.radius},
+            {"corner_radius", c.cornerRadius}, {"flute_length", c.fluteLength},
+            {"flutes", c.teeth.flutes},        {"helix_deg", c.teeth.helixDeg},
+            {"runout_mm", c.teeth.runout},     {"runout_phase_deg", c.teeth.runoutPhaseDeg}};
+  // A general cutter's solid is its profile: echoed, so a report says what was swept.
+  if (c.general()) j["segments"] = profileSegmentsToJson(*c.profile);
+  return j;
 }
 
 json cuttingModelToJson(const CuttingModel& cutting) {

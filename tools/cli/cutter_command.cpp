@@ -1,0 +1,46 @@
+#include "tools/cli/cutter_command.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <memory>
+
+#include "tools/cli/command.h"
+
+namespace scallop {
+
+namespace {
+
+struct CutterArgs {
+  std::string tool, svg, title;
+  bool json = false;
+};
+
+int runCutter(const CutterArgs& args) {
+  const Cutter cutter = cutterFromArgument(args.tool);
+  if (!args.svg.empty())
+    writeCutterSvg(cutter, args.title.empty() ? toString(cutter.type) : args.title, args.svg);
+  if (args.json)
+    std::printf("%s\n", cutterDocument(cutter).dump(2).c_str());
+  else
+    std::printf("%s", cutterTable(cutter).c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command addCutterCommand(CLI::App& parent, CommonOptions& /*common*/) {
+  auto args = std::make_shared<CutterArgs>();
+  CLI::App* cmd = parent.add_subcommand(
+      "cutter",
+      "Print a cutter's profile (its lines and arcs from the tip up, mm) and optionally\n"
+      "draw it as SVG. TOOL is a cutter object as JSON text, e.g.\n"
+      "'{\"type\": \"taper_ball\", \"tip_radius\": 1, \"taper_deg\": 5, \"flute_length\": 20}',\n"
+      "or a file holding one or a job with \"tool\" (keys: docs/CONVENTIONS.md).");
+  cmd->add_option("tool", args->tool, "Cutter object (JSON text) or cutter/job file")->required();
+  cmd->add_option("--svg", args->svg, "Write the profile picture (SVG) to this file");
+  cmd->add_option("--title", args->title, "Title of the picture (default: the type)");
+  cmd->add_flag("--json", args->json, "Print one JSON document (the profile) instead of a table");
+  return {cmd, [args] { return runCutter(*args); }};
+}
+
+}  // namespace scallop
