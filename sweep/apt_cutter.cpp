@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/cutter_shapes.h"
 #include "sweep/profile_chain.h"
@@ -9,8 +10,6 @@
 namespace scallop {
 
 namespace {
-
-constexpr double kAptDegToRad = M_PI / 180;
 
 void requireGiven(double given, double expected, const std::string& field, const char* what) {
   if (std::fabs(given - expected) <= kAptTangencyToleranceMm) return;
@@ -34,7 +33,7 @@ std::vector<ProfileSegment> aptCutterChain(const AptCutterValues& v, const std::
   requireWithin(v.e, -1e6, 1e6, false, false, field + ".e", "mm");
   requireWithin(v.f, -1e6, 1e6, false, false, field + ".f", "mm");
   requirePositiveLength(v.h, field + ".h");
-  const double a = v.a * kAptDegToRad, b = v.b * kAptDegToRad;
+  const double a = v.a * kRadPerDeg, b = v.b * kRadPerDeg;
   // The lines meet at P; each has a unit direction u (up the profile) and an inward
   // normal n (towards the solid).
   const ProfilePoint P{v.d / 2, v.d / 2 * std::tan(a)};

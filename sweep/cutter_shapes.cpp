@@ -4,14 +4,13 @@
 #include <memory>
 #include <utility>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/profile_chain.h"
 
 namespace scallop {
 
 namespace {
-
-constexpr double kDegToRad = M_PI / 180;
 
 // The point of the circle (centre, radius) in the direction of `towards` from the centre.
 ProfilePoint pointTowards(ProfilePoint centre, double radius, ProfilePoint towards) {
@@ -68,7 +67,7 @@ void requireSideArcReaches(ProfilePoint centre, double radius, double L, double 
 std::vector<ProfileSegment> taperBallChain(const TaperBallShape& shape, const std::string& field) {
   requirePositiveLength(shape.tipRadius, field + ".tip_radius");
   requireWithin(shape.taperDeg, 0, 45, true, false, field + ".taper_deg", "degrees");
-  const double r = shape.tipRadius, b = shape.taperDeg * kDegToRad;
+  const double r = shape.tipRadius, b = shape.taperDeg * kRadPerDeg;
   const ProfilePoint tangent{r * std::cos(b), r * (1 - std::sin(b))};
   // The flank extended down meets s = 0 at rho = r cos b - s_t tan b.
   const double rhoAt0 = tangent.rho - tangent.s * std::tan(b);
@@ -83,7 +82,7 @@ std::vector<ProfileSegment> taperBallChain(const TaperBallShape& shape, const st
 std::vector<ProfileSegment> taperBullChain(const TaperBullShape& shape, const std::string& field) {
   requirePositiveLength(shape.tipDiameter, field + ".tip_diameter");
   requireWithin(shape.taperDeg, 0, 45, true, false, field + ".taper_deg", "degrees");
-  const double b = shape.taperDeg * kDegToRad, r = shape.cornerRadius;
+  const double b = shape.taperDeg * kRadPerDeg, r = shape.cornerRadius;
   // The corner centre (e, r) at distance r from the flank through (tip_diameter / 2, 0):
   // e = d/2 - r (1 - sin b) / cos b, which must leave a flat bottom (e > 0).
   const double rMax = shape.tipDiameter / 2 * std::cos(b) / (1 - std::sin(b));
@@ -107,7 +106,7 @@ std::vector<ProfileSegment> coneChain(const ConeShape& shape, const std::string&
   requireWithin(shape.tipDiameter, 0, shape.diameter, false, true, field + ".tip_diameter",
                 "mm (0 for a sharp point, less than the diameter)");
   requirePositiveLength(shape.fluteLength, field + ".flute_length");
-  const double half = shape.angleDeg / 2 * kDegToRad;
+  const double half = shape.angleDeg / 2 * kRadPerDeg;
   const double R = shape.diameter / 2, tipRho = shape.tipDiameter / 2;
   const double coneHeight = (R - tipRho) / std::tan(half);
   if (shape.fluteLength < coneHeight)
@@ -163,7 +162,7 @@ std::vector<ProfileSegment> taperBarrelChain(const TaperBarrelShape& shape,
   requireWithin(shape.taperDeg, 0, 45, false, false, field + ".taper_deg", "degrees");
   requirePositiveLength(shape.referenceDiameter, field + ".reference_diameter");
   requirePositiveLength(shape.fluteLength, field + ".flute_length");
-  const double r = shape.tipRadius, Rf = shape.formRadius, b = shape.taperDeg * kDegToRad;
+  const double r = shape.tipRadius, Rf = shape.formRadius, b = shape.taperDeg * kRadPerDeg;
   // The reference point (d/2, sRef) has its tangent at b from the axis, so the form
   // centre is (d/2 - Rf cos b, sRef + Rf sin b); tangency to the tip ball about (0, r)
   // (|centre - (0, r)| = Rf - r, the centre above the ball's) fixes sRef.
