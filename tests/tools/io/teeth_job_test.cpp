@@ -92,9 +92,10 @@ TEST(TeethJob, GcodeFeedPerToothIsFeedOverSpeedAndFlutes) {
   EXPECT_FALSE(ignored(f, "F"));
   EXPECT_FALSE(ignored(f, "S"));
   EXPECT_TRUE(f.warnings.kept.empty());
-  // Inches per minute; 4 flutes; arc chords each carry it.
+  // Inches per minute; 4 flutes; the arc, one exact move, carries it.
   const ToolPathFile inch = readTeeth("G20 G0 X0 Y0 Z0\nS1000\nG2 X1 Y0 R0.5 F10\n", 4);
-  ASSERT_GT(inch.path.moves.size(), 2u);
+  ASSERT_EQ(inch.path.moves.size(), 1u);
+  EXPECT_EQ(inch.path.moves[0].arc, 1u);
   for (const Move& m : inch.path.moves) EXPECT_EQ(m.feedPerTooth, 10 * 25.4 / (1000 * 4));
   // G95: F per revolution, no S needed; G93 (inverse time) and no S give none.
   EXPECT_EQ(readTeeth("G95 G0 X0 Y0 Z0\nG1 X1 F0.2\n").path.moves[0].feedPerTooth, 0.1);
