@@ -78,9 +78,18 @@ SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
 SweptMove::SweptMove(const SweptSegment& segment)
     : cutter_(segment.cutter()),
       curve_(PoseCurve::linear({segment.start(), segment.axis()}, {segment.end(), segment.axis()})),
-      segment_(std::make_shared<const SweptSegment>(segment)),
       reach_(std::hypot(segment.cutter().fluteLength, segment.cutter().radius)),
-      knotSpacing_(kContactKnotSpacing) {}
+      knotSpacing_(kContactKnotSpacing) {
+  // SweptSegment's closed-form sweep knows the cutter only by radius and corner radius
+  // (ball, flat, bull): a cutter of any profile in it would be swept as the flat
+  // cylinder of its largest width, below the true solid wherever the profile is
+  // narrower (a barrel at tilt 88.5 deg: 0.30 mm under its floor). Such a cutter goes
+  // through the certified search like the constructor above sends it.
+  if (!cutter_.general())
+    segment_ = std::make_shared<const SweptSegment>(segment);
+  else
+    tipSpeed_ = curve_.tipSpeedBound(), zTop_ = support({0, 0, 1}), knotsId_ = newContactKnotsId();
+}
 
 void SweptMove::setContactKnotSpacing(double mm) {
   if (!(mm >= 0) || mm == knotSpacing_) return;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "analysis/pass_section.h"
+#include "analysis/simulated_interval.h"
 #include "base/constants.h"
 #include "sweep/cutter_profile.h"
 #include "sweep/raster.h"
@@ -145,7 +146,7 @@ TEST(ContactCurvature, BarrelFormArcAgainstTheExactSection) {
 
 // The same barrel as a cutter of the general kernel (sweep/cutter_profile.h): its
 // contact arc found on the profile and its exact section by its own support map agree
-// with the test's own barrel above.
+// with the test's own barrel above, and so does the simulated pass of it.
 Cutter barrelCutter() {
   const double span = kFormSpanDeg * kPi / 180;
   const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
@@ -175,6 +176,15 @@ TEST(ContactCurvature, BarrelCutterOfTheGeneralKernelAgrees) {
     const ProcedureResult exact = halfIntervalExact(barrel, p.leadDeg, p.tiltDeg, 0.005);
     ASSERT_TRUE(exact.applicable) << exact.reason;
     EXPECT_NEAR(exact.value, 0.5 * width.mid(), 1e-9);
+    // The simulated pass (a swept move of this cutter, ray-cast) stays on or above its
+    // floor, the plane through the cutter's lowest point, and touches it.
+    const SimulatedPass pass(barrel, p.leadDeg, p.tiltDeg);
+    EXPECT_NEAR(pass.heightAboveFloor(pass.floorPositionMm()), 0, 1e-9);
+    const ScallopProfile section = pass.profile(-pass.reachMinusMm(), pass.reachPlusMm(), 0.05);
+    EXPECT_GE(*std::min_element(section.height.begin(), section.height.end()), -1e-9);
+    const SideIntervals sides = pass.halfIntervals(0.005);
+    ASSERT_TRUE(sides.reachable) << sides.reason;
+    EXPECT_NEAR(sides.halfIntervalMm(), exact.value, 1e-9);
   }
 }
 
