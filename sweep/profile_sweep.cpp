@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "sweep/certified_search.h"
 #include "sweep/profile_lowest_point.h"
@@ -19,16 +18,10 @@ constexpr double kKelleyMinNormalZ = 1e-6;
 
 // A proven lower bound of f on [0, 1]: f(t) >= at0 + slope t.
 struct KelleyLine {
-  double at0, slope;
-  double at(double t) const { return at0 + slope * t; }
+  double at0 = 0, slope = 0;
+  double t = -1;  // where it touches f; < 0: none yet
+  double at(double s) const { return at0 + slope * s; }
 };
-
-// max over `lines` at t.
-double kelleyLargestAt(const std::vector<KelleyLine>& lines, double t) {
-  double best = -HUGE_VAL;
-  for (const KelleyLine& line : lines) best = std::max(best, line.at(t));
-  return best;
-}
 
 }  // namespace
 
@@ -39,7 +32,11 @@ ProfileSweepResult profileSweepLowestPoint(const CutterProfile& profile, const V
   const double scale = 1 + profile.reach() + std::fabs(x) + std::fabs(y) + length(p0) + length(d);
   // Round-off of the few products in a line or a separation, mm.
   const double slack = 1e-12 * scale;
-  std::vector<KelleyLine> lines;
+  // The tangent lines nearest the minimum from either side: falling (slope < 0) at the
+  // largest t, rising at the smallest (the others lie below them near the minimum; any
+  // subset of the lines is still a lower bound).
+  KelleyLine fall, rise;
+  int secantSteps = 0;
   double lo = 0, hi = 1;  // what is left of [0, 1]
   LowestPoint best;       // the smallest f sampled (U)
   ProfileSweepResult out;
@@ -56,7 +53,13 @@ ProfileSweepResult profileSweepLowestPoint(const CutterProfile& profile, const V
       if (!(n.z < -kKelleyMinNormalZ)) return out;
       const double h = dot(profileSupport(profile, a, n), n);
       const double margin = slack / -n.z;
-      lines.push_back({(h + dot(n, p0) - n.x * x - n.y * y) / n.z - margin, dot(n, d) / n.z});
+      const KelleyLine line{(h + dot(n, p0) - n.x * x - n.y * y) / n.z - margin, dot(n, d) / n.z,
+                            t};
+      if (line.slope < 0) {
+        if (fall.t < 0 || t > fall.t) fall = line;
+      } else if (rise.t < 0 || t < rise.t) {
+        rise = line;
+      }
     } else {
       // A horizontal direction separating l from K(t): from the axis' middle, then from
       // the support point in the last direction tried (the nearest point, in the limit).
@@ -97,21 +100,25 @@ ProfileSweepResult profileSweepLowestPoint(const CutterProfile& profile, const V
       if (best.hit && best.z < cutoff) out.point = best;
       return out;
     }
-    // The minimiser of the largest line over [lo, hi]: an end or where a falling line
-    // meets a rising one.
-    double next = 0.5 * (lo + hi), bound = -HUGE_VAL;
-    if (!lines.empty()) {
-      auto consider = [&](double s) {
-        const double v = kelleyLargestAt(lines, s);
-        if (v < bound || bound == -HUGE_VAL) bound = v, next = s;
-      };
-      consider(lo), consider(hi);
-      for (const KelleyLine& fall : lines)
-        for (const KelleyLine& rise : lines)
-          if (fall.slope < 0 && rise.slope > 0) {
-            const double s = (fall.at0 - rise.at0) / (rise.slope - fall.slope);
-            if (s > lo && s < hi) consider(s);
-          }
+    // The lower bound over [lo, hi]: the minimum of the larger of the two lines, where
+    // they cross (kept in [lo, hi]) or at the end a single line falls or rises towards.
+    double cross = 0.5 * (lo + hi), bound = -HUGE_VAL;
+    if (fall.t >= 0 && rise.t >= 0) {
+      const double s = (fall.at0 - rise.at0) / (rise.slope - fall.slope);
+      cross = std::clamp(std::isfinite(s) ? s : cross, lo, hi);
+      bound = std::max(fall.at(cross), rise.at(cross));
+    } else if (fall.t >= 0) {
+      cross = hi, bound = fall.at(hi);
+    } else if (rise.t >= 0) {
+      cross = lo, bound = rise.at(lo);
+    }
+    double next = cross;
+    // Newton's method on f' with the secant of the two slopes (superlinear where f is
+    // smooth), inside the bracket; every third step the crossing, which shrinks the gap
+    // where the secant would keep one end.
+    if (fall.t >= 0 && rise.t >= 0 && ++secantSteps % 3 != 0) {
+      const double s = fall.t - fall.slope * (rise.t - fall.t) / (rise.slope - fall.slope);
+      if (s > fall.t && s < rise.t && s >= lo && s <= hi) next = s;
     }
     if (bound >= cutoff) {
       out.decided = true;  // a miss below the cutoff
