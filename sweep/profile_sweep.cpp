@@ -37,8 +37,9 @@ ProfileSweepResult profileSweepLowestPoint(const CutterProfile& profile, const V
   // subset of the lines is still a lower bound).
   KelleyLine fall, rise;
   int secantSteps = 0;
-  double lo = 0, hi = 1;  // what is left of [0, 1]
-  LowestPoint best;       // the smallest f sampled (U)
+  KelleyLine last, beforeLast;  // the last two lines sampled
+  double lo = 0, hi = 1;        // what is left of [0, 1]
+  LowestPoint best;             // the smallest f sampled (U)
   ProfileSweepResult out;
   const double dxy2 = d.x * d.x + d.y * d.y;
   // First where l is nearest the tip's horizontal path.
@@ -55,6 +56,7 @@ ProfileSweepResult profileSweepLowestPoint(const CutterProfile& profile, const V
       const double margin = slack / -n.z;
       const KelleyLine line{(h + dot(n, p0) - n.x * x - n.y * y) / n.z - margin, dot(n, d) / n.z,
                             t};
+      beforeLast = last, last = line;
       if (line.slope < 0) {
         if (fall.t < 0 || t > fall.t) fall = line;
       } else if (rise.t < 0 || t < rise.t) {
@@ -119,6 +121,15 @@ ProfileSweepResult profileSweepLowestPoint(const CutterProfile& profile, const V
     if (fall.t >= 0 && rise.t >= 0 && ++secantSteps % 3 != 0) {
       const double s = fall.t - fall.slope * (rise.t - fall.t) / (rise.slope - fall.slope);
       if (s > fall.t && s < rise.t && s >= lo && s <= hi) next = s;
+    } else if (last.t >= 0 && (fall.t < 0 || rise.t < 0)) {
+      // One side only: the secant of the last two slopes extrapolated, or from one
+      // sample Newton with f'' guessed as |d_xy|^2 / maxRadius (a ball's at its
+      // bottom); either way kept in [lo, hi], and the bracket then takes over.
+      const double curvature = beforeLast.t >= 0 && last.t != beforeLast.t
+                                   ? (last.slope - beforeLast.slope) / (last.t - beforeLast.t)
+                                   : dxy2 / profile.maxRadius();
+      const double s = last.t - last.slope / curvature;
+      if (curvature > 0 && std::isfinite(s)) next = std::clamp(s, lo, hi);
     }
     if (bound >= cutoff) {
       out.decided = true;  // a miss below the cutoff
