@@ -51,6 +51,7 @@
 #include "sweep/certified_search.h"
 #include "sweep/contact_knots.h"
 #include "sweep/face_contact.h"
+#include "sweep/profile_sweep.h"
 #include "sweep/ray_clearance.h"
 #include "sweep/rim_contact.h"
 
@@ -171,6 +172,14 @@ LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double
 LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
                                           double cutoffAnchor) const {
   const Cutter& c = cutter_;
+  // A general cutter on a constant-axis move with a linear tip: f is convex, Kelley's
+  // method proves the height in a few exact evaluations (profile_sweep.h); where it
+  // cannot close, the steps below decide.
+  if (c.general() && curve_.constantAxis() && curve_.linearTip()) {
+    const ProfileSweepResult fast = profileSweepLowestPoint(
+        *c.profile, curve_.axis(0), curve_.tipStart(), curve_.tipEnd(), x, y, cutoff);
+    if (fast.decided) return fast.point;
+  }
   // Step 4a before anything is looked up: from the caller's anchor (a same-pass
   // neighbour of the best move so far: the pose they share), otherwise from the middle
   // of the move (its axis is kept: no trigonometry; this settles most of the moves far

@@ -2,11 +2,12 @@
 // its exact lowest point on a vertical line. One primitive per move of a tool path.
 //
 // A move whose axis is constant is a SweptSegment (the convex Minkowski sweep,
-// swept_segment.cpp); a move whose axis turns (CL data with a new axis at every point,
-// a 5-axis machine's rotary motion) by the rim and face contacts and ray clearance of
-// swept_move.cpp, or the certified search over t (certified_search.h). Either way the height is the
-// lowest point of the true swept solid, with a proven lower bound within 1e-9 mm of the height
-// returned.
+// swept_segment.cpp; for a cutter of any profile, Kelley's method on the convex f(t) of
+// profile_sweep.h, the certified search where it cannot close); a move whose axis turns (CL data
+// with a new axis at every point, a 5-axis machine's rotary motion) by the rim and face contacts
+// and ray clearance of swept_move.cpp, or the certified search over t (certified_search.h). Either
+// way the height is the lowest point of the true swept solid, with a proven lower bound within 1e-9
+// mm of the height returned.
 //
 // Memory: sizeof(SweptMove) bytes per move (472), plus, for a constant-axis
 // move, one SweptSegment on the heap (952 bytes; see bytesPerMove()).
