@@ -52,7 +52,7 @@ struct GuardCase {
   const char* name;
   double areaMm;
 };
-// B9 (10^6 short moves at full size; 4 mm: 6.4e4 cells, ~1.7e4 moves) is measured only when
+// B9 (10^6 short moves at full size; 4 mm: 2e4 cells, 3 443 moves) is measured only when
 // named: scripts/perf-guard.sh --case B9, for the scene's instructions a move.
 constexpr GuardCase kCases[] = {{"B1", 1.0}, {"B3", 1.0}, {"B4", 5.0}, {"B9", 4.0}};
 
