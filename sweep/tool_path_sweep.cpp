@@ -13,6 +13,10 @@ namespace scallop {
 
 namespace {
 
+Vec3 mirrorY(const Vec3& v) {
+  return {v.x, -v.y, v.z};
+}
+
 // One entry of the output before it is built: a turning move (built at once, in path
 // order: each takes the next knots identity) or a constant-axis segment, which later
 // moves along the same line may still extend.
@@ -81,6 +85,9 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
     double phaseStart, radPerMm;
     uint16_t tool;
     bool counterClockwise;
+    // A turning CL move's mirror image in y = 0, built as the mirrored job builds it
+    // (ToothSweep::Mirror); arcs and machine moves have none.
+    std::optional<PoseCurve> mirrored;
   };
   std::vector<Spindle> spindle;
   const bool teeth = cutting.teeth();
@@ -173,7 +180,10 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       turning.emplace_back(cutter, curve);
       planned.push_back(p);
     }
-    spindle.push_back({phaseStart, radPerMm, mv.tool, ccw});
+    spindle.push_back({phaseStart, radPerMm, mv.tool, ccw, std::nullopt});
+    if (teeth && ccw && !curve.constantAxis() && mv.rotary == 0 && mv.arc == 0)
+      spindle.back().mirrored = PoseCurve::linear({mirrorY(mv.from.tip), mirrorY(mv.from.axis)},
+                                                  {mirrorY(mv.to.tip), mirrorY(mv.to.axis)});
   }
   buildPlanned(swept, planned, planned.size(), turning, out);
   if (teeth) {
@@ -187,13 +197,26 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       const double len = m.curve().pathLength();
       const Cutter& cutter = cutters[sp.tool];
       const double drop = cutter.teeth.axialReach();
-      PoseCurve curve = m.curve();
-      if (drop > 0) {
+      auto raised = [drop](const PoseCurve& curve) {
+        if (!(drop > 0)) return curve;
         const Vec3 axis = curve.axis(0), raise = drop * axis;
-        curve = PoseCurve::linear({curve.tipStart() + raise, axis}, {curve.tipEnd() + raise, axis});
+        return PoseCurve::linear({curve.tipStart() + raise, axis}, {curve.tipEnd() + raise, axis});
+      };
+      // A CCW move is computed on its mirror image, as the mirrored job computes it.
+      std::optional<ToothSweep::Mirror> mirror;
+      if (sp.counterClockwise && m.segment()) {
+        const SweptSegment& seg = *m.segment();
+        const auto envelope = std::make_shared<const SweptSegment>(
+            swept[sp.tool], mirrorY(seg.start()), mirrorY(seg.end()), mirrorY(seg.axis()));
+        mirror = ToothSweep::Mirror{raised(PoseCurve::linear({envelope->start(), envelope->axis()},
+                                                             {envelope->end(), envelope->axis()})),
+                                    envelope};
+      } else if (sp.counterClockwise && sp.mirrored) {
+        mirror = ToothSweep::Mirror{*sp.mirrored, nullptr};
       }
-      m.attachTeeth(std::make_shared<ToothSweep>(cutter, curve, sp.phaseStart, sp.radPerMm * len,
-                                                 sp.counterClockwise));
+      m.attachTeeth(std::make_shared<ToothSweep>(cutter, raised(m.curve()), sp.phaseStart,
+                                                 sp.radPerMm * len, sp.counterClockwise,
+                                                 mirror ? &*mirror : nullptr));
     }
   }
   return out;

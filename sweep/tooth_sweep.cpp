@@ -131,13 +131,15 @@ struct ToothSweep::Sample {
 };
 
 ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phaseStart,
-                       double phaseRate, bool counterClockwise)
+                       double phaseRate, bool counterClockwise, const Mirror* mirror)
     : cutter_(cutter),
       envelope_(cutter.spindleEnvelope()),
-      curve_(curve),
+      curve_(counterClockwise && mirror ? mirror->curve : curve),
       phaseStart_(phaseStart),
       phaseRate_(phaseRate),
-      ccw_(counterClockwise) {
+      ccw_(counterClockwise && !mirror),
+      mirrored_(counterClockwise && mirror) {
+  if (mirrored_) mirroredEnvelope_ = mirror->envelope;
   axisStart_ = curve_.axis(0);
   e1Start_ = referenceAcross(axisStart_);
   e2Start_ = ccw_ ? cross(e1Start_, axisStart_) : cross(axisStart_, e1Start_);
@@ -179,8 +181,9 @@ void ToothSweep::makeGroups() {
       groups_.push_back(g);
       it = groups_.end() - 1;
     }
+    // In degrees, so that equal pitch given as angles (0, 120, 240) gives integers.
     it->roots.push_back(teeth.toothAnglesDeg.empty() ? double(k)
-                                                     : n * teeth.toothAngle(k) / kTwoPi);
+                                                     : teeth.toothAnglesDeg[size_t(k)] * n / 360);
   }
   for (Group& g : groups_) {
     g.everyInteger = g.roots.size() == size_t(n);
@@ -224,6 +227,12 @@ void ToothSweep::frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const {
 }
 
 Vec3 ToothSweep::edgePoint(int k, double h, double rho, double t) const {
+  if (mirrored_) {
+    ToothSweep cw = *this;
+    cw.mirrored_ = false;
+    const Vec3 p = cw.edgePoint(k, h, rho, t);
+    return {p.x, -p.y, p.z};
+  }
   Vec3 a, e1, e2;
   frame(t, a, e1, e2);
   const double phi = phaseStart_ + phaseRate_ * t;
@@ -518,6 +527,19 @@ void ToothSweep::scanInterval(const Group& g, Sample& a, Sample& b, double x, do
 
 LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& envelope,
                                        double cutoff) const {
+  if (!mirrored_) return clockwiseCrossing(x, y, envelope, cutoff);
+  // The mirrored job's search at (x, -y), from the mirrored envelope's lowest point
+  // there (its search starts at that point's t*), mirrored back.
+  LowestPoint start = envelope;
+  if (mirroredEnvelope_ && envelope.hit)
+    start = mirroredEnvelope_->lowestPoint(x, -y, nullptr, cutoff);
+  LowestPoint out = clockwiseCrossing(x, -y, start, cutoff);
+  out.normal.y = -out.normal.y;
+  return out;
+}
+
+LowestPoint ToothSweep::clockwiseCrossing(double x, double y, const LowestPoint& envelope,
+                                          double cutoff) const {
   LowestPoint miss;
   if (!envelope.hit || !(envelope.z < cutoff) || !(phaseRate_ > 0)) return miss;
   Crossing best{cutoff, 0, Vec3{0, 0, -1}, kMaxSplits, false, 0};

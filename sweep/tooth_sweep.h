@@ -7,8 +7,11 @@
 // degrees of X), carried with the axis's rotation (PoseCurve::carry), e2 = a x e1 when
 // the spindle turns clockwise seen from the shank (M3), e2 = e1 x a counter-clockwise
 // (M4): a body angle b sits at angle b - phi(t) from e1 towards e2, with
-// phi(t) = phaseStart + phaseRate t (radians). Flipping e2 is the mirror image: a CCW
-// move computes, sign for sign, what the CW move mirrored in a vertical plane computes.
+// phi(t) = phaseStart + phaseRate t (radians). Flipping e2 is the mirror image: the CCW
+// move is the CW move mirrored in a vertical plane, mirrored back. Given the move
+// mirrored in y = 0 (Mirror below), a CCW move is computed as exactly that: the CW
+// search on the mirrored move at (x, -y), so its heights are bit for bit those of the
+// mirrored CW job's cell (x, -y).
 // Tooth k's edge point at height h above the tip (radius rho(h) on the profile, or on
 // the flat bottom at radius rho <= Rb with h = 0), with its offsets (dr_k, da_k), is
 //     tip(t) + runout (cos(psi_r - phi) e1 + sin(psi_r - phi) e2)
@@ -18,6 +21,7 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "sweep/cutter.h"
@@ -31,10 +35,19 @@ class ToothSweep {
   // `cutter` carries its teeth; phi(t) = phaseStart + phaseRate t, radians. Moves whose
   // tip follows a machine's curve (TCP-off machine moves) are refused by sweepToolPath;
   // arcs are scanned as turning moves are (their envelope's height is not convex).
-  // `counterClockwise`: M4. A cutter whose teeth reach below the tip
+  // A CCW move's mirror image in y = 0: the curve as the mirrored job builds it, and for
+  // a constant axis the swept envelope (lowered as sweepToolPath lowers it) whose
+  // lowest point the mirrored job's search starts from.
+  struct Mirror {
+    PoseCurve curve;
+    std::shared_ptr<const SweptSegment> envelope;
+  };
+
+  // `counterClockwise`: M4, computed on `mirror` when given (else with e2 = e1 x a on
+  // `curve`: the same heights to round-off). A cutter whose teeth reach below the tip
   // (teeth.axialReach() > 0) needs a straight move with a constant axis.
   ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phaseStart, double phaseRate,
-             bool counterClockwise = false);
+             bool counterClockwise = false, const Mirror* mirror = nullptr);
 
   // The lowest point on the vertical line through (x, y) that an edge of the move
   // passes through, given the move's spindle-envelope height `envelope` there (a proven
@@ -56,7 +69,7 @@ class ToothSweep {
   const Cutter& cutter() const { return cutter_; }
   double phaseStart() const { return phaseStart_; }
   double phaseRate() const { return phaseRate_; }
-  bool counterClockwise() const { return ccw_; }
+  bool counterClockwise() const { return ccw_ || mirrored_; }
 
  private:
   struct Sample;
@@ -83,6 +96,8 @@ class ToothSweep {
     double leaf;     // the shortest interval halved where the faces agree (in t)
   };
   void makeGroups();
+  LowestPoint clockwiseCrossing(double x, double y, const LowestPoint& envelope,
+                                double cutoff) const;
   void frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const;
   Sample pose(double t) const;
   double tangentBelow(const Sample* ref, double t) const;
@@ -111,7 +126,10 @@ class ToothSweep {
   std::vector<Group> groups_;  // the deepest-reaching first
   PoseCurve curve_;
   double phaseStart_ = 0, phaseRate_ = 0;
-  bool ccw_ = false;  // counter-clockwise (M4): e2 = e1 x a
+  bool ccw_ = false;  // counter-clockwise (M4) on curve_: e2 = e1 x a
+  // Counter-clockwise, computed clockwise on the mirrored move (curve_ is the mirror's).
+  bool mirrored_ = false;
+  std::shared_ptr<const SweptSegment> mirroredEnvelope_;
   Vec3 axisStart_, e1Start_, e2Start_;  // the spindle frame at t = 0
   double helixSlope_ = 0;               // tan(beta) / R, rad per mm of height
   double runoutPhase_ = 0;              // psi_r, rad
