@@ -26,6 +26,12 @@
 // near the axis, where F's end values show the crossing the sweep makes), and a search
 // has a budget of halvings past which it counts as unproven.
 //
+// Per-tooth geometry. Teeth with their own offsets lie on their own solids (the profile
+// moved out by dr, the tip lowered by da): teeth with equal offsets form a group, each
+// group is searched as described here on its own solid for the F values of its teeth
+// (F - flutes psi_k / (2 pi) a multiple of flutes; every integer for one group of every
+// tooth at equal pitch), and the groups share the best crossing.
+//
 // Which intervals matter. Every edge point lies in the spindle envelope (the solid of
 // revolution holding the cutter at every spindle angle), so a crossing at t is no lower
 // than the envelope's lowest point h(t) at pose(t). For a constant axis, h is convex in
