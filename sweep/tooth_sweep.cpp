@@ -57,6 +57,7 @@
 #include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/ray_clearance.h"
+#include "sweep/tooth_groups.h"
 
 namespace scallop {
 
@@ -92,24 +93,6 @@ Vec3 referenceAcross(const Vec3& a) {
 
 Vec3 mirrorZ(const Vec3& v) {
   return {v.x, v.y, -v.z};
-}
-
-// The solid of revolution of a tooth's edge about the cutter's axis: the profile moved
-// out by its radial offset (its flat bottom's radius Rb + dr >= 0). The axial offset is
-// the group's drop, applied to the tip.
-Cutter toothCutter(const Cutter& nominal, const ToothOffset& offset) {
-  Cutter c = nominal;
-  c.teeth = CutterTeeth{};
-  if (offset.radial == 0) return c;
-  c.radius = nominal.radius + offset.radial;
-  if (c.cornerRadius <= 0) return c;  // a flat end mill stays flat
-  if (c.radius - c.cornerRadius <= 0) {
-    c.radius = c.cornerRadius;
-    c.type = CutterType::Ball;
-  } else {
-    c.type = CutterType::Bull;
-  }
-  return c;
 }
 
 }  // namespace
@@ -162,62 +145,7 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
   for (const ToothOffset& o : cutter_.teeth.toothOffsets)
     offsetReach = std::max(offsetReach, std::abs(o.radial) + std::abs(o.axial));
   reach_ = std::hypot(cutter_.fluteLength, cutter_.radius) + cutter_.teeth.runout + offsetReach;
-  makeGroups();
-}
-
-// Teeth with equal offsets share one group; the group's roots are their body angles in
-// units of F (flutes psi_k / (2 pi)). Its scan step is a quarter tooth period when the
-// group is every tooth at equal pitch, else half the smallest gap between its roots
-// (fewer, longer intervals: counted by callgrind on B5 with one tooth offset, a quarter
-// of the gap cost 10 % more, a quarter tooth period 20 % more; the calm test keeps any
-// step exact).
-void ToothSweep::makeGroups() {
-  const CutterTeeth& teeth = cutter_.teeth;
-  const int n = teeth.flutes;
-  for (int k = 0; k < n; ++k) {
-    const ToothOffset o = teeth.toothOffset(k);
-    auto same = [&](const Group& g) { return g.radial == o.radial && g.drop == o.axial; };
-    auto it = std::find_if(groups_.begin(), groups_.end(), same);
-    if (it == groups_.end()) {
-      Group g;
-      g.cutter = toothCutter(cutter_, o);
-      Cutter turning = g.cutter;
-      turning.teeth.runout = teeth.runout;
-      g.envelope = turning.spindleEnvelope();
-      g.radial = o.radial;
-      g.drop = o.axial;
-      g.flutes = n;
-      groups_.push_back(g);
-      it = groups_.end() - 1;
-    }
-    // In degrees, so that equal pitch given as angles (0, 120, 240) gives integers.
-    it->roots.push_back(teeth.toothAnglesDeg.empty() ? double(k)
-                                                     : teeth.toothAnglesDeg[size_t(k)] * n / 360);
-  }
-  for (Group& g : groups_) {
-    g.everyInteger = g.roots.size() == size_t(n);
-    for (int k = 0; k < n && g.everyInteger; ++k) g.everyInteger = g.roots[size_t(k)] == k;
-    double gap = n + g.roots.front() - g.roots.back();
-    if (g.roots.size() == 1) gap = n;
-    for (size_t i = 1; i < g.roots.size(); ++i) gap = std::min(gap, g.roots[i] - g.roots[i - 1]);
-    g.step = kStepPeriods * kTwoPi / (n * phaseRate_);
-    if (!g.everyInteger) g.step *= 2 * gap;
-    g.leaf = g.step / 64;
-  }
-  // The deepest-reaching teeth first: their crossings prune the others' search.
-  std::stable_sort(groups_.begin(), groups_.end(), [](const Group& a, const Group& b) {
-    return a.drop + a.radial > b.drop + b.radial;
-  });
-}
-
-bool ToothSweep::Group::isRoot(double f) const {
-  if (everyInteger) return std::floor(f) == f;
-  const double n = flutes;
-  for (double r : roots) {
-    const double q = (f - r) / n;
-    if (std::floor(q) == q) return true;
-  }
-  return false;
+  groups_ = makeToothGroups(cutter_, kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_));
 }
 
 unsigned long long ToothSweep::unprovenSearches() {

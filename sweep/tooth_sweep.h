@@ -27,6 +27,7 @@
 #include "sweep/cutter.h"
 #include "sweep/pose_curve.h"
 #include "sweep/swept_segment.h"
+#include "sweep/tooth_groups.h"
 
 namespace scallop {
 
@@ -73,20 +74,7 @@ class ToothSweep {
 
  private:
   struct Sample;
-  // Teeth with the same offsets share one solid of revolution and are searched
-  // together: F (below) crosses one of `roots` modulo flutes where one of them crosses.
-  struct Group {
-    Cutter cutter;              // their edges' solid of revolution about the cutter's axis
-    Cutter envelope;            // that pushed out by the runout
-    double radial = 0;          // their radial offset, mm
-    double drop = 0;            // their axial offset: their tip sits `drop` below the spindle's
-    int flutes = 0;             // of the whole cutter
-    std::vector<double> roots;  // flutes psi_k / (2 pi), in [0, flutes)
-    bool everyInteger = false;  // roots = 0, 1, ..., flutes - 1
-    double step = 0;            // the scan step, in t
-    double leaf = 0;            // the shortest interval halved where the faces agree
-    bool isRoot(double f) const;
-  };
+  using Group = ToothGroup;  // teeth with the same offsets (tooth_groups.h)
   struct Crossing {
     double z;  // the lowest crossing so far (or the cutoff), mm
     double t;
@@ -95,7 +83,6 @@ class ToothSweep {
     bool unproven;   // the budget ran out before every interval was shown monotone
     double leaf;     // the shortest interval halved where the faces agree (in t)
   };
-  void makeGroups();
   LowestPoint clockwiseCrossing(double x, double y, const LowestPoint& envelope,
                                 double cutoff) const;
   void frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const;
