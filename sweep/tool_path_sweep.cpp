@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -113,8 +114,9 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
     uint16_t tool;
     bool counterClockwise;
     // A turning CL move's mirror image in y = 0, built as the mirrored job builds it
-    // (ToothSweep::Mirror); arcs and machine moves have none.
-    std::optional<PoseCurve> mirrored;
+    // (ToothSweep::Mirror); arcs and machine moves have none. A pointer: the entry of
+    // every other move stays small (one an entry of `out`, 10^7 in a large program).
+    std::unique_ptr<const PoseCurve> mirrored;
   };
   std::vector<Spindle> spindle;
   const bool teeth = cutting.teeth();
@@ -209,10 +211,12 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       turning.emplace_back(cutter, curve);
       planned.push_back(p);
     }
-    spindle.push_back({phaseStart, radPerMm, mv.tool, ccw, std::nullopt});
-    if (teeth && ccw && !curve.constantAxis() && mv.rotary == 0 && mv.arc == 0)
-      spindle.back().mirrored = PoseCurve::linear({mirrorY(mv.from.tip), mirrorY(mv.from.axis)},
-                                                  {mirrorY(mv.to.tip), mirrorY(mv.to.axis)});
+    if (!teeth) continue;  // the spindle's entries serve the teeth only
+    spindle.push_back({phaseStart, radPerMm, mv.tool, ccw, nullptr});
+    if (ccw && !curve.constantAxis() && mv.rotary == 0 && mv.arc == 0)
+      spindle.back().mirrored = std::make_unique<const PoseCurve>(
+          PoseCurve::linear({mirrorY(mv.from.tip), mirrorY(mv.from.axis)},
+                            {mirrorY(mv.to.tip), mirrorY(mv.to.axis)}));
   }
   buildPlanned(swept, planned, planned.size(), turning, out, window, kept);
   if (teeth) {
