@@ -62,7 +62,8 @@ bool mayCut(const ToolPath& path, const Move& m, double R, double flute, double 
 
 double programCellsPerMove(const Cutter& cutter, const ToolPath& path, const Box3& stock,
                            double spacing) {
-  const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
+  const double R = cutter.radius + cutter.teeth.runout + cutter.teeth.radialReach();
+  const double flute = cutter.fluteLength + cutter.teeth.axialReach();
   size_t reaching = 0;
   for (const Move& m : path.moves) {
     if (!mayCut(path, m, R, flute, stock.max.z)) continue;
@@ -86,8 +87,9 @@ size_t visitMoveSceneBytes(const Cutter& cutter, const ToolPath& path, const Box
   // TileBox (152) + Embree's BVH share (measured: 370 on the scene of scene_memory_test)
   // + the most the tile grid takes a tile.
   constexpr double kBytesPerTile = 420 + scene_detail::TileGrid::kMaxBytesPerTile;
-  // With runout the moves hold the spindle envelope, radius R + runout.
-  const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
+  // With runout or tooth offsets the moves hold the spindle envelope (Cutter::spindleEnvelope).
+  const double R = cutter.radius + cutter.teeth.runout + cutter.teeth.radialReach();
+  const double flute = cutter.fluteLength + cutter.teeth.axialReach();
   SceneOptions tiling;
   tiling.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
   size_t counted = 0;

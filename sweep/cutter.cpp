@@ -1,9 +1,11 @@
 #include "sweep/cutter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 
 namespace scallop {
@@ -129,12 +131,31 @@ CutterTeeth CutterTeeth::make(int flutes, double helixDeg, double runout, double
   return teeth;
 }
 
+double CutterTeeth::toothAngle(int k) const {
+  if (toothAnglesDeg.empty()) return 2 * kPi * k / flutes;
+  return toothAnglesDeg[size_t(k)] * kPi / 180;
+}
+
+double CutterTeeth::radialReach() const {
+  double most = 0;
+  for (const ToothOffset& o : toothOffsets) most = std::max(most, o.radial);
+  return most;
+}
+
+double CutterTeeth::axialReach() const {
+  double most = 0;
+  for (const ToothOffset& o : toothOffsets) most = std::max(most, o.axial);
+  return most;
+}
+
 Cutter Cutter::spindleEnvelope() const {
-  if (teeth.runout <= 0) return *this;
+  const double out = teeth.runout + teeth.radialReach();
+  if (out <= 0) return *this;
   // A point at radius rho from the cutter's axis is at most rho + runout from the
-  // spindle's: the profile moves out by the runout, its corner radius unchanged.
+  // spindle's, and a tooth's edge at most radialReach beyond the nominal profile: the
+  // profile moves out by both, its corner radius unchanged.
   Cutter env = *this;
-  env.radius = radius + teeth.runout;
+  env.radius = radius + out;
   env.type = cornerRadius > 0 ? CutterType::Bull : CutterType::Flat;
   return env;
 }

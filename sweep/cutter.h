@@ -9,8 +9,10 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "sweep/cutter_profile.h"
+#include "sweep/tooth_geometry.h"
 
 namespace scallop {
 
@@ -44,11 +46,26 @@ CutterType parseCutterType(const std::string& name, const std::string& field = "
 //     psi_k + h tan(beta) / R (a right-hand helix, cutting clockwise, M3).
 //   * Runout: the cutter's own axis sits `runout` mm off the spindle axis, in the body
 //     direction at angle `runoutPhaseDeg` from tooth 0, and turns with the spindle.
+//   * Per tooth (tooth_geometry.h): body angles other than 2 pi k / flutes (unequal
+//     pitch, `tooth_angles_deg`) and each edge moved radially and axially
+//     (`tooth_offsets`); runout composes with them.
 struct CutterTeeth {
   int flutes = 2;
-  double helixDeg = 0;        // beta, degrees, in [0, 60]
-  double runout = 0;          // mm, in [0, R / 10]
-  double runoutPhaseDeg = 0;  // degrees, any finite angle
+  double helixDeg = 0;                    // beta, degrees, in [0, 60]
+  double runout = 0;                      // mm, in [0, R / 10]
+  double runoutPhaseDeg = 0;              // degrees, any finite angle
+  std::vector<double> toothAnglesDeg;     // one per flute; empty: 360 k / flutes
+  std::vector<ToothOffset> toothOffsets;  // one per flute; empty: none
+
+  // Tooth k's body angle psi_k, radians.
+  double toothAngle(int k) const;
+  ToothOffset toothOffset(int k) const {
+    return toothOffsets.empty() ? ToothOffset{} : toothOffsets[size_t(k)];
+  }
+  // The largest outward radial offset and the largest axial one towards the tip, mm
+  // (0 when no tooth reaches beyond the nominal edge).
+  double radialReach() const;
+  double axialReach() const;
 
   // Validates; throws InputError naming `fieldPrefix` + ".flutes" (an integer 1..16),
   // ".helix_deg", ".runout_mm" (needs the cutter's radius) or ".runout_phase_deg".
@@ -79,9 +96,12 @@ struct Cutter {
   bool general() const { return profile != nullptr; }
 
   // The solid of revolution about the spindle axis that holds the cutter at every
-  // spindle angle: the profile pushed out by the runout (Rb + runout, r, L), so a ball
-  // with runout becomes a bull. The cutter itself without runout. Its heights are a
-  // proven lower bound of the teeth's (every edge point lies inside it).
+  // spindle angle: the profile pushed out by the runout and the largest outward radial
+  // tooth offset (Rb + runout + radialReach, r, L), so a ball with runout becomes a
+  // bull. The cutter itself without either. Teeth reaching below the tip
+  // (teeth.axialReach() > 0) lie in it once it is lowered by that much along the axis
+  // (sweepToolPath lowers the moves it sweeps). Its heights are then a proven lower
+  // bound of the teeth's (every edge point lies inside it).
   Cutter spindleEnvelope() const;
 };
 

@@ -4,7 +4,8 @@
 //   * Teeth: the lowest point that any cutting edge passes through (tooth_sweep.h). The
 //     spindle angle is phi(s) = phi0 + 2 pi s / (flutes fz), s the tip's distance along
 //     the whole path (rapids included, in file order), so the marks are continuous from
-//     move to move.
+//     move to move. The spindle turns clockwise seen from the shank (M3) unless the job
+//     or the move says counter-clockwise (M4): the mirror image (tooth_sweep.h).
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,8 @@ struct CuttingModel {
   // carries F / (S flutes) of its own).
   double feedPerTooth = 0;
   double phaseDeg = 0;  // phi0, degrees
+  // Job key "spindle": the direction of a move that sets none (Move::spindle).
+  bool counterClockwise = false;
   bool teeth() const { return kind == CuttingModelKind::Teeth; }
 };
 

@@ -72,6 +72,9 @@ struct Move {
   // Feed per tooth of this move, mm (G-code: F / (S flutes)); 0: the job's
   // cutting.feed_per_tooth. Read by the "teeth" cutting model only.
   double feedPerTooth = 0;
+  // The spindle's direction for the teeth model: 0 the job's (CuttingModel), 1
+  // clockwise (G-code M3), -1 counter-clockwise (M4).
+  int8_t spindle = 0;
 };
 
 struct ToolPath {

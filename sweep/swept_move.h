@@ -102,6 +102,9 @@ class SweptMove {
 
  private:
   LowestPoint turningLowestPoint(double x, double y, double cutoff, double cutoffAnchor) const;
+  // envelopeLowestPoint's body, forced inline into lowestPoint (swept_move.cpp).
+  LowestPoint envelopeOf(double x, double y, SectionMemo* memo, double cutoff,
+                         double cutoffAnchor) const;
 
   Cutter cutter_;
   PoseCurve curve_;

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -12,6 +13,10 @@
 namespace scallop {
 
 namespace {
+
+Vec3 mirrorY(const Vec3& v) {
+  return {v.x, -v.y, v.z};
+}
 
 // One entry of the output before it is built: a turning move (built at once, in path
 // order: each takes the next knots identity) or a constant-axis segment, which later
@@ -34,8 +39,13 @@ bool continues(const Planned& a, const Cutter& c, const Vec3& bStart, const Vec3
     return false;
   const CutterTeeth &ta = c.teeth, &tb = cutter.teeth;
   if (ta.flutes != tb.flutes || ta.helixDeg != tb.helixDeg || ta.runout != tb.runout ||
-      ta.runoutPhaseDeg != tb.runoutPhaseDeg)
+      ta.runoutPhaseDeg != tb.runoutPhaseDeg || ta.toothAnglesDeg != tb.toothAnglesDeg)
     return false;
+  if (ta.toothOffsets.size() != tb.toothOffsets.size()) return false;
+  for (size_t k = 0; k < ta.toothOffsets.size(); ++k)
+    if (ta.toothOffsets[k].radial != tb.toothOffsets[k].radial ||
+        ta.toothOffsets[k].axial != tb.toothOffsets[k].axial)
+      return false;
   const Vec3 da = a.to - a.from, db = bEnd - bStart;
   const double la = length(da), lb = length(db);
   if (la == 0 || lb == 0) return la == 0 && lb == 0 ? false : true;
@@ -102,6 +112,11 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
   struct Spindle {
     double phaseStart, radPerMm;
     uint16_t tool;
+    bool counterClockwise;
+    // A turning CL move's mirror image in y = 0, built as the mirrored job builds it
+    // (ToothSweep::Mirror); arcs and machine moves have none. A pointer: the entry of
+    // every other move stays small (one an entry of `out`, 10^7 in a large program).
+    std::unique_ptr<const PoseCurve> mirrored;
   };
   std::vector<Spindle> spindle;
   const bool teeth = cutting.teeth();
@@ -140,6 +155,7 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       throw InputError(where,
                        "the teeth cutting model needs a feed per tooth: set "
                        "cutting.feed_per_tooth in the job (or F and S in the program)");
+    const bool ccw = mv.spindle != 0 ? mv.spindle < 0 : cutting.counterClockwise;
     if (teeth && cutters[mv.tool].general())
       throw InputError(where, std::string("the teeth cutting model supports ball, flat and bull "
                                           "cutters; tool ") +
@@ -147,11 +163,24 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
                                   toString(cutters[mv.tool].type) +
                                   " cutter (use the envelope model)");
     const Cutter& cutter = swept[mv.tool];
-    const PoseCurve curve = PoseCurve::ofMove(path, mv, where.c_str());
+    PoseCurve curve = PoseCurve::ofMove(path, mv, where.c_str());
     if (teeth && !curve.linearTip() && !curve.arcTip())
       throw InputError(where,
                        "the teeth cutting model needs a straight tip motion; TCP-off machine "
                        "moves (G49) are not supported with teeth");
+    // Teeth reaching below the tip: the envelope is swept that much lower (a straight
+    // move with a constant axis: lowering it is a translation).
+    const double drop = teeth ? cutters[mv.tool].teeth.axialReach() : 0;
+    if (drop > 0) {
+      if (!curve.constantAxis() || !curve.linearTip())
+        throw InputError(where, "tool " + std::to_string(mv.tool) +
+                                    " has a tooth reaching below its tip (tooth_offsets: "
+                                    "axial > 0), which needs straight moves with a constant "
+                                    "tool axis; this move turns the axis or is an arc");
+      const Vec3 lower = drop * curve.axis(0);
+      curve = PoseCurve::linear({mv.from.tip - lower, mv.from.axis},
+                                {mv.to.tip - lower, mv.to.axis}, where.c_str());
+    }
     // A general cutter sweeps every move through SweptMove's certified search, and an
     // arc is never merged: it is no segment (its tip is curved).
     if (curve.constantAxis() && curve.linearTip() && !cutter.general()) {
@@ -159,7 +188,8 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       if (!planned.empty() &&
           continues(planned.back(), swept[planned.back().cutter], curve.tipStart(), curve.tipEnd(),
                     axis, cutter) &&
-          (!teeth || spindle.back().radPerMm == radPerMm)) {
+          (!teeth ||
+           (spindle.back().radPerMm == radPerMm && spindle.back().counterClockwise == ccw))) {
         // Keep a zero-length predecessor's position out of the merged move.
         Planned& back = planned.back();
         const bool restart = length(back.to - back.from) == 0;
@@ -181,20 +211,46 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
       turning.emplace_back(cutter, curve);
       planned.push_back(p);
     }
-    spindle.push_back({phaseStart, radPerMm, mv.tool});
+    if (!teeth) continue;  // the spindle's entries serve the teeth only
+    spindle.push_back({phaseStart, radPerMm, mv.tool, ccw, nullptr});
+    if (ccw && !curve.constantAxis() && mv.rotary == 0 && mv.arc == 0)
+      spindle.back().mirrored = std::make_unique<const PoseCurve>(
+          PoseCurve::linear({mirrorY(mv.from.tip), mirrorY(mv.from.axis)},
+                            {mirrorY(mv.to.tip), mirrorY(mv.to.axis)}));
   }
   buildPlanned(swept, planned, planned.size(), turning, out, window, kept);
   if (teeth) {
     // Each move's edges: the cutter with its teeth (the move holds its spindle
     // envelope), phi(t) = phaseStart + radPerMm len t, len the tip's path length (an
-    // arc's: its speed is constant, so phi is linear in the distance along it too).
+    // arc's: its speed is constant, so phi is linear in the distance along it too). A
+    // lowered envelope's move is raised back to the spindle's tip.
     size_t i = 0;
     for (SweptMove& m : out) {
       while (!kept[i]) ++i;
       const Spindle& sp = spindle[i++];
       const double len = m.curve().pathLength();
-      m.attachTeeth(std::make_shared<ToothSweep>(cutters[sp.tool], m.curve(), sp.phaseStart,
-                                                 sp.radPerMm * len));
+      const Cutter& cutter = cutters[sp.tool];
+      const double drop = cutter.teeth.axialReach();
+      auto raised = [drop](const PoseCurve& curve) {
+        if (!(drop > 0)) return curve;
+        const Vec3 axis = curve.axis(0), raise = drop * axis;
+        return PoseCurve::linear({curve.tipStart() + raise, axis}, {curve.tipEnd() + raise, axis});
+      };
+      // A CCW move is computed on its mirror image, as the mirrored job computes it.
+      std::optional<ToothSweep::Mirror> mirror;
+      if (sp.counterClockwise && m.segment()) {
+        const SweptSegment& seg = *m.segment();
+        const auto envelope = std::make_shared<const SweptSegment>(
+            swept[sp.tool], mirrorY(seg.start()), mirrorY(seg.end()), mirrorY(seg.axis()));
+        mirror = ToothSweep::Mirror{raised(PoseCurve::linear({envelope->start(), envelope->axis()},
+                                                             {envelope->end(), envelope->axis()})),
+                                    envelope};
+      } else if (sp.counterClockwise && sp.mirrored) {
+        mirror = ToothSweep::Mirror{*sp.mirrored, nullptr};
+      }
+      m.attachTeeth(std::make_shared<ToothSweep>(cutter, raised(m.curve()), sp.phaseStart,
+                                                 sp.radPerMm * len, sp.counterClockwise,
+                                                 mirror ? &*mirror : nullptr));
     }
   }
   return out;

@@ -26,6 +26,12 @@
 // near the axis, where F's end values show the crossing the sweep makes), and a search
 // has a budget of halvings past which it counts as unproven.
 //
+// Per-tooth geometry. Teeth with their own offsets lie on their own solids (the profile
+// moved out by dr, the tip lowered by da): teeth with equal offsets form a group, each
+// group is searched as described here on its own solid for the F values of its teeth
+// (F - flutes psi_k / (2 pi) a multiple of flutes; every integer for one group of every
+// tooth at equal pitch), and the groups share the best crossing.
+//
 // Which intervals matter. Every edge point lies in the spindle envelope (the solid of
 // revolution holding the cutter at every spindle angle), so a crossing at t is no lower
 // than the envelope's lowest point h(t) at pose(t). For a constant axis, h is convex in
@@ -49,7 +55,9 @@
 #include <cmath>
 
 #include "base/constants.h"
+#include "base/input_error.h"
 #include "sweep/ray_clearance.h"
+#include "sweep/tooth_groups.h"
 
 namespace scallop {
 
@@ -112,20 +120,32 @@ struct ToothSweep::Sample {
 };
 
 ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phaseStart,
-                       double phaseRate)
+                       double phaseRate, bool counterClockwise, const Mirror* mirror)
     : cutter_(cutter),
       envelope_(cutter.spindleEnvelope()),
-      curve_(curve),
+      curve_(counterClockwise && mirror ? mirror->curve : curve),
       phaseStart_(phaseStart),
-      phaseRate_(phaseRate) {
+      phaseRate_(phaseRate),
+      ccw_(counterClockwise && !mirror),
+      mirrored_(counterClockwise && mirror) {
+  if (mirrored_) mirroredEnvelope_ = mirror->envelope;
   axisStart_ = curve_.axis(0);
   e1Start_ = referenceAcross(axisStart_);
-  e2Start_ = cross(axisStart_, e1Start_);
+  e2Start_ = ccw_ ? cross(e1Start_, axisStart_) : cross(axisStart_, e1Start_);
   helixSlope_ = std::tan(cutter_.teeth.helixDeg * kPi / 180) / cutter_.radius;
   runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
   tipSpeed_ = curve_.tipSpeedBound();
   translates_ = curve_.constantAxis() && curve_.linearTip();
-  reach_ = std::hypot(cutter_.fluteLength, cutter_.radius) + cutter_.teeth.runout;
+  drop_ = cutter_.teeth.axialReach();
+  if (drop_ > 0 && !translates_)
+    throw InputError("tool.tooth_offsets",
+                     "a tooth reaching below the tip (axial offset > 0) needs straight moves "
+                     "with a constant tool axis");
+  double offsetReach = 0;
+  for (const ToothOffset& o : cutter_.teeth.toothOffsets)
+    offsetReach = std::max(offsetReach, std::abs(o.radial) + std::abs(o.axial));
+  reach_ = std::hypot(cutter_.fluteLength, cutter_.radius) + cutter_.teeth.runout + offsetReach;
+  groups_ = makeToothGroups(cutter_, kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_));
 }
 
 unsigned long long ToothSweep::unprovenSearches() {
@@ -140,10 +160,16 @@ void ToothSweep::frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const {
   a = curve_.axis(t);
   e1 = curve_.carry(e1Start_, 0, t);
   e1 = normalize(e1 - dot(e1, a) * a);
-  e2 = cross(a, e1);
+  e2 = ccw_ ? cross(e1, a) : cross(a, e1);
 }
 
 Vec3 ToothSweep::edgePoint(int k, double h, double rho, double t) const {
+  if (mirrored_) {
+    ToothSweep cw = *this;
+    cw.mirrored_ = false;
+    const Vec3 p = cw.edgePoint(k, h, rho, t);
+    return {p.x, -p.y, p.z};
+  }
   Vec3 a, e1, e2;
   frame(t, a, e1, e2);
   const double phi = phaseStart_ + phaseRate_ * t;
@@ -151,10 +177,11 @@ Vec3 ToothSweep::edgePoint(int k, double h, double rho, double t) const {
     const double r = cutter_.cornerRadius, rb = cutter_.bottomRadius();
     rho = h >= r ? cutter_.radius : rb + std::sqrt(std::max(0.0, r * r - (r - h) * (r - h)));
   }
-  const double psi = kTwoPi * k / cutter_.teeth.flutes + h * helixSlope_ - phi;
+  const double psi = cutter_.teeth.toothAngle(k) + h * helixSlope_ - phi;
   const double psiR = runoutPhase_ - phi;
+  const ToothOffset o = cutter_.teeth.toothOffset(k);
   return curve_.tip(t) + cutter_.teeth.runout * (std::cos(psiR) * e1 + std::sin(psiR) * e2) +
-         rho * (std::cos(psi) * e1 + std::sin(psi) * e2) + h * a;
+         (rho + o.radial) * (std::cos(psi) * e1 + std::sin(psi) * e2) + (h - o.axial) * a;
 }
 
 ToothSweep::Sample ToothSweep::pose(double t) const {
@@ -179,16 +206,16 @@ double ToothSweep::tangentBelow(const Sample* ref, double t) const {
   return z - 1e-9 * (1 + std::abs(z));
 }
 
-void ToothSweep::needEnvelope(Sample& s, double x, double y, const Sample* near1,
+void ToothSweep::needEnvelope(const Group& g, Sample& s, double x, double y, const Sample* near1,
                               const Sample* near2) const {
   if (s.envDone) return;
   s.envDone = true;
   const double below = std::max(tangentBelow(near1, s.t), tangentBelow(near2, s.t));
-  const LowestPoint env =
-      cutterLowestPoint(envelope_, s.a, x - s.tip.x, y - s.tip.y, below - s.tip.z);
+  const Vec3 tip = g.drop != 0 ? s.tip - g.drop * s.a : s.tip;
+  const LowestPoint env = cutterLowestPoint(g.envelope, s.a, x - tip.x, y - tip.y, below - tip.z);
   s.envHit = env.hit;
   if (!env.hit) return;
-  s.envZ = env.z + s.tip.z;
+  s.envZ = env.z + tip.z;
   s.envNormal = env.normal;
   if (env.normal.z < -1e-9) {
     s.envSlope = dot(env.normal, curve_.tipVelocity(s.t)) / env.normal.z;
@@ -196,31 +223,33 @@ void ToothSweep::needEnvelope(Sample& s, double x, double y, const Sample* near1
   }
 }
 
-void ToothSweep::needSide(Sample& s, int side, double x, double y, const Sample* near1,
-                          const Sample* near2) const {
+void ToothSweep::needSide(const Group& g, Sample& s, int side, double x, double y,
+                          const Sample* near1, const Sample* near2) const {
   if (s.done[side]) return;
   s.done[side] = true;
+  // The group's own tip (the cutter's, lowered by the teeth's axial offset).
+  const Vec3 T = g.drop != 0 ? s.T - g.drop * s.a : s.T;
   LowestPoint lp;
   if (side == 0 && cutter_.teeth.runout <= 0) {
-    // Without runout the cutter is its own spindle envelope.
-    needEnvelope(s, x, y, near1, near2);
+    // Without runout the group's solid is its own spindle envelope.
+    needEnvelope(g, s, x, y, near1, near2);
     lp.hit = s.envHit;
-    lp.z = s.envZ - s.tip.z;
+    lp.z = s.envZ - T.z;
     lp.normal = s.envNormal;
   } else if (side == 0) {
-    lp = cutterLowestPoint(cutter_, s.a, x - s.T.x, y - s.T.y);
+    lp = cutterLowestPoint(g.cutter, s.a, x - T.x, y - T.y);
   } else {
     // The exit point: the lowest point of the cutter mirrored in z (tip at the origin).
-    lp = cutterLowestPoint(cutter_, mirrorZ(s.a), x - s.T.x, y - s.T.y);
+    lp = cutterLowestPoint(g.cutter, mirrorZ(s.a), x - T.x, y - T.y);
     lp.z = -lp.z;
   }
   if (!lp.hit) return;
-  const Vec3 q{x - s.T.x, y - s.T.y, lp.z};
+  const Vec3 q{x - T.x, y - T.y, lp.z};
   const double h = dot(q, s.a);
-  if (h >= cutter_.fluteLength * (1 - 1e-12)) return;  // the top cap carries no edge
+  if (h >= g.cutter.fluteLength * (1 - 1e-12)) return;  // the top cap carries no edge
   const Vec3 across = q - h * s.a;
   s.hit[side] = true;
-  s.z[side] = lp.z + s.T.z;
+  s.z[side] = lp.z + T.z;
   s.h[side] = h;
   s.theta[side] = std::atan2(dot(across, s.e2), dot(across, s.e1));
   if (side == 0) s.normal0 = lp.normal;
@@ -232,14 +261,15 @@ void ToothSweep::needSide(Sample& s, int side, double x, double y, const Sample*
 // it is a point of the cutter on the line, so the exit is no lower. In closed form:
 // with w = z - tip.z, the squared distance from the axis is A w^2 + B w + C and the
 // height along the axis c + w a_z. -inf where the line misses that solid.
-double ToothSweep::exitLowerBound(const Vec3& tip, const Vec3& a, double shrink, double x,
-                                  double y) const {
+double ToothSweep::exitLowerBound(const Group& g, const Vec3& groupTip, const Vec3& a,
+                                  double shrink, double x, double y) const {
+  const Vec3 tip = g.drop != 0 ? groupTip - g.drop * a : groupTip;
   const double dx = x - tip.x, dy = y - tip.y;
-  const double c = dx * a.x + dy * a.y, R = cutter_.radius - shrink;
+  const double c = dx * a.x + dy * a.y, R = g.cutter.radius - shrink;
   const double A = 1 - a.z * a.z, B = -2 * c * a.z, C = dx * dx + dy * dy - c * c - R * R;
   if (!(a.z > 1e-9) || !(R > 0)) return -HUGE_VAL;
-  const double sLo = (cutter_.cornerRadius + shrink - c) / a.z;
-  const double sHi = (cutter_.fluteLength - shrink - c) / a.z;
+  const double sLo = (g.cutter.cornerRadius + shrink - c) / a.z;
+  const double sHi = (g.cutter.fluteLength - shrink - c) / a.z;
   double w1 = -HUGE_VAL, w2 = HUGE_VAL;
   if (A > 1e-15) {
     const double disc = B * B - 4 * A * C;
@@ -264,14 +294,15 @@ double ToothSweep::exitLowerBound(const Vec3& tip, const Vec3& a, double shrink,
 //   * a constant axis: the straight part pulled in by the runout alone translates
 //     linearly, so its exit height is concave in t and the lower of the ends' bounds
 //     holds between them (both ends meeting it, so does every t between).
-double ToothSweep::exitBound(const Sample& a, const Sample& b, double x, double y) const {
+double ToothSweep::exitBound(const Group& g, const Sample& a, const Sample& b, double x,
+                             double y) const {
   const double w = b.t - a.t;
   const Sample mid = pose(0.5 * (a.t + b.t));
   const double delta = (tipSpeed_ + curve_.turnRate() * reach_) * 0.5 * w * (1 + 1e-12) + 1e-12;
-  double bound = exitLowerBound(mid.tip, mid.a, delta + cutter_.teeth.runout, x, y);
+  double bound = exitLowerBound(g, mid.tip, mid.a, delta + cutter_.teeth.runout, x, y);
   if (translates_) {
-    const double ends = std::min(exitLowerBound(a.tip, a.a, cutter_.teeth.runout, x, y),
-                                 exitLowerBound(b.tip, b.a, cutter_.teeth.runout, x, y));
+    const double ends = std::min(exitLowerBound(g, a.tip, a.a, cutter_.teeth.runout, x, y),
+                                 exitLowerBound(g, b.tip, b.a, cutter_.teeth.runout, x, y));
     bound = std::max(bound, ends);
   }
   return bound;
@@ -297,10 +328,11 @@ bool ToothSweep::calm(const Sample& a, const Sample& b, int side) const {
 }
 
 // A lower bound of h over [a.t, b.t] where a pruning proof exists, else -inf.
-double ToothSweep::envelopeBound(Sample& a, Sample& b, double x, double y, double best) const {
+double ToothSweep::envelopeBound(const Group& g, Sample& a, Sample& b, double x, double y,
+                                 double best) const {
   if (translates_) {
-    needEnvelope(a, x, y, &b);
-    needEnvelope(b, x, y, &a);
+    needEnvelope(g, a, x, y, &b);
+    needEnvelope(g, b, x, y, &a);
     if (!a.envHit || !b.envHit || !a.slopeKnown || !b.slopeKnown) return -HUGE_VAL;
     // Two tangent lines of a convex function: their crossing is the lowest either
     // allows (or an end, if they do not cross inside).
@@ -311,6 +343,7 @@ double ToothSweep::envelopeBound(Sample& a, Sample& b, double x, double y, doubl
     const double tc = std::clamp((b.envZ - a.envZ - sb * dt) / (sa - sb), 0.0, dt);
     return std::min(std::min(a.envZ, b.envZ), a.envZ + sa * tc) - slack;
   }
+  // A turning move: every tooth lies in envelope_ at the spindle's tip (drop_ is 0).
   if (best == HUGE_VAL) return -HUGE_VAL;
   return rayClearsMove(envelope_, curve_, Vec3{x, y, best}, 0.5 * (a.t + b.t), a.t, b.t)
              ? best
@@ -321,8 +354,8 @@ double ToothSweep::envelopeBound(Sample& a, Sample& b, double x, double y, doubl
 // either order of t) for one side, and keeps the crossing if it is the lowest so far.
 // Regula falsi with the Illinois rule: F is nearly linear in t (the spindle turns at a
 // constant rate), so a few steps bring the height to 1e-13 mm.
-void ToothSweep::solveCrossing(const Sample& a, const Sample& b, int side, double target, double x,
-                               double y, Crossing& best) const {
+void ToothSweep::solveCrossing(const Group& g, const Sample& a, const Sample& b, int side,
+                               double target, double x, double y, Crossing& best) const {
   Sample p = a, q = b;  // g(p) < 0 <= g(q), g = F - F(a) - target
   double gp = -target, gq = deltaF(a, b, side) - target;
   double rawP = gp, rawQ = gq;  // g itself (gp, gq carry the Illinois halvings)
@@ -333,7 +366,7 @@ void ToothSweep::solveCrossing(const Sample& a, const Sample& b, int side, doubl
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     if (!(t > lo && t < hi)) break;  // the bracket is down to adjacent doubles
     Sample s = pose(t);
-    needSide(s, side, x, y, &p, &q);
+    needSide(g, s, side, x, y, &p, &q);
     if (!s.hit[side]) break;  // the face ends inside: keep the bracket's ends
     const double g = deltaF(a, s, side) - target;
     // Converged when the height's error, |g| times dz/dF across the bracket, is below
@@ -365,16 +398,16 @@ void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
 
 // The crossings on [a, b]: halves the interval until F is calm on each side that meets
 // the cutter at both ends, then solves for every integer F passes.
-void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int depth,
+void ToothSweep::scanInterval(const Group& g, Sample& a, Sample& b, double x, double y, int depth,
                               Crossing& best) const {
-  if (envelopeBound(a, b, x, y, best.z) >= best.z) return;
+  if (envelopeBound(g, a, b, x, y, best.z) >= best.z) return;
   // Where the exit points are proven no lower than the best (exitBound), only the entry
   // points are searched.
-  const int sides = exitBound(a, b, x, y) >= best.z ? 1 : 2;
+  const int sides = exitBound(g, a, b, x, y) >= best.z ? 1 : 2;
   bool split = false;
   for (int side = 0; side < sides; ++side) {
-    needSide(a, side, x, y);
-    needSide(b, side, x, y);
+    needSide(g, a, side, x, y);
+    needSide(g, b, side, x, y);
     if (a.hit[side] != b.hit[side] || (a.hit[side] && !calm(a, b, side))) split = true;
   }
   // Where the faces agree at both ends but F is not calm, halving stops at a leaf of
@@ -391,15 +424,15 @@ void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int dept
   if (split) {
     --best.splitsLeft;
     Sample mid = pose(0.5 * (a.t + b.t));
-    needEnvelope(mid, x, y, &a, &b);
-    scanInterval(a, mid, x, y, depth + 1, best);
-    scanInterval(mid, b, x, y, depth + 1, best);
+    needEnvelope(g, mid, x, y, &a, &b);
+    scanInterval(g, a, mid, x, y, depth + 1, best);
+    scanInterval(g, mid, b, x, y, depth + 1, best);
     return;
   }
   for (int side = 0; side < sides; ++side) {
     if (!a.hit[side] || !b.hit[side]) {
       // An end of a face inside an interval of 1e-13: a crossing there is at either end.
-      if (a.hit[side] && std::floor(absoluteF(a, side)) == absoluteF(a, side)) keep(a, side, best);
+      if (a.hit[side] && g.isRoot(absoluteF(a, side))) keep(a, side, best);
       continue;
     }
     // Without runout X(t).z itself is concave in t (the cutter translates linearly).
@@ -407,44 +440,91 @@ void ToothSweep::scanInterval(Sample& a, Sample& b, double x, double y, int dept
       continue;
     const double fa = absoluteF(a, side);
     const double df = deltaF(a, b, side);
-    // Every integer m with fa < m <= fa + df (or the reverse for a decreasing F).
+    // Every root m of the group with fa < m <= fa + df (or the reverse for a decreasing
+    // F): every integer at equal pitch with one group, else each tooth's root modulo
+    // flutes.
     const double lo = std::min(fa, fa + df), hi = std::max(fa, fa + df);
-    for (double m = std::floor(lo) + 1; m <= hi; ++m) {
+    auto solve = [&](double m) {
       if (df > 0)
-        solveCrossing(a, b, side, m - fa, x, y, best);
+        solveCrossing(g, a, b, side, m - fa, x, y, best);
       else
-        solveCrossing(b, a, side, m - lo, x, y, best);
+        solveCrossing(g, b, a, side, m - lo, x, y, best);
+    };
+    if (g.everyInteger) {
+      for (double m = std::floor(lo) + 1; m <= hi; ++m) solve(m);
+    } else {
+      const double n = g.flutes;
+      for (double r : g.roots)
+        for (double m = r + n * (std::floor((lo - r) / n) + 1); m <= hi; m += n)
+          if (m > lo) solve(m);
     }
-    if (std::floor(fa) == fa) keep(a, side, best);
+    if (g.isRoot(fa)) keep(a, side, best);
   }
 }
 
 LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& envelope,
                                        double cutoff) const {
+  if (!mirrored_) return clockwiseCrossing(x, y, envelope, cutoff);
+  // The mirrored job's search at (x, -y), from the mirrored envelope's lowest point
+  // there (its search starts at that point's t*), mirrored back.
+  LowestPoint start = envelope;
+  if (mirroredEnvelope_ && envelope.hit)
+    start = mirroredEnvelope_->lowestPoint(x, -y, nullptr, cutoff);
+  LowestPoint out = clockwiseCrossing(x, -y, start, cutoff);
+  out.normal.y = -out.normal.y;
+  return out;
+}
+
+LowestPoint ToothSweep::clockwiseCrossing(double x, double y, const LowestPoint& envelope,
+                                          double cutoff) const {
   LowestPoint miss;
   if (!envelope.hit || !(envelope.z < cutoff) || !(phaseRate_ > 0)) return miss;
-  // The scan step, in t.
-  const double step = kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_);
-  Crossing best{cutoff, 0, Vec3{0, 0, -1}, kMaxSplits, false, step / 64};
+  Crossing best{cutoff, 0, Vec3{0, 0, -1}, kMaxSplits, false, 0};
   bool scanWhole = !translates_;
+  double tStar = 0;
   if (translates_) {
     // t* of the envelope's lowest point: the swept solid's support point in direction n
-    // is the cutter's support point plus a point of the tip's segment.
+    // is the cutter's support point plus a point of the tip's segment (lowered by drop_).
     const Vec3 p0 = curve_.tipStart(), d = curve_.tipEnd() - p0;
     const double dd = dot(d, d);
-    double tStar = 0;
     if (dd > 0) {
-      const Vec3 onPath =
+      Vec3 onPath =
           Vec3{x, y, envelope.z} - cutterSupport(envelope_, curve_.axis(0), envelope.normal);
+      if (drop_ != 0) onPath = onPath + drop_ * curve_.axis(0);
       tStar = std::clamp(dot(onPath - p0, d) / dd, 0.0, 1.0);
     }
-    // Outward in both directions, nearest intervals first, until h has risen to the
-    // best crossing and still rises outward (a subgradient of that sign): h is convex,
-    // so beyond such a sample it stays higher. (t* is h's minimum to round-off; the
-    // slope test keeps the stop proven even where it is not.) The line meets the
-    // envelope on an interval of t that holds t*; leaving it ends the scan.
+  }
+  bool unproven = false;
+  for (const Group& g : groups_) {
+    best.splitsLeft = kMaxSplits;
+    best.unproven = false;
+    best.leaf = g.leaf;
+    scanGroup(g, x, y, tStar, scanWhole, best);
+    unproven = unproven || best.unproven;
+  }
+  if (unproven) unprovenCrossingCount.fetch_add(1, std::memory_order_relaxed);
+  if (!(best.z < cutoff)) return miss;
+  LowestPoint out;
+  out.hit = true;
+  out.z = best.z;
+  out.normal = best.normal;
+  out.t = best.t;
+  return out;
+}
+
+// One group's crossings, lowering `best`.
+void ToothSweep::scanGroup(const Group& g, double x, double y, double tStar, bool scanWhole,
+                           Crossing& best) const {
+  const double step = g.step;
+  if (!scanWhole) {
+    // Outward in both directions from t*, nearest intervals first, until h has risen to
+    // the best crossing and still rises outward (a subgradient of that sign): h is
+    // convex, so beyond such a sample it stays higher. (t* is the envelope's minimum to
+    // round-off, and another group's h has its own: the slope test keeps the stop proven
+    // wherever the scan starts.) The line meets the envelope on an interval of t;
+    // leaving it ends the scan.
     Sample left = pose(tStar);
-    needEnvelope(left, x, y);
+    needEnvelope(g, left, x, y);
     Sample right = left;
     bool goLeft = tStar > 0, goRight = tStar < 1;
     if (!left.envHit) goLeft = goRight = false, scanWhole = true;
@@ -454,15 +534,15 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
     while (goLeft || goRight) {
       if (goRight) {
         Sample next = pose(std::min(1.0, right.t + step));
-        needEnvelope(next, x, y, &right);
-        scanInterval(right, next, x, y, 0, best);
+        needEnvelope(g, next, x, y, &right);
+        scanInterval(g, right, next, x, y, 0, best);
         goRight = next.t < 1 && !risen(next, 1);
         right = next;
       }
       if (goLeft) {
         Sample next = pose(std::max(0.0, left.t - step));
-        needEnvelope(next, x, y, &left);
-        scanInterval(next, left, x, y, 0, best);
+        needEnvelope(g, next, x, y, &left);
+        scanInterval(g, next, left, x, y, 0, best);
         goLeft = next.t > 0 && !risen(next, -1);
         left = next;
       }
@@ -473,18 +553,10 @@ LowestPoint ToothSweep::lowestCrossing(double x, double y, const LowestPoint& en
     Sample prev = pose(0);
     for (int i = 1; i <= n; ++i) {
       Sample next = pose(double(i) / n);
-      scanInterval(prev, next, x, y, 0, best);
+      scanInterval(g, prev, next, x, y, 0, best);
       prev = next;
     }
   }
-  if (best.unproven) unprovenCrossingCount.fetch_add(1, std::memory_order_relaxed);
-  if (!(best.z < cutoff)) return miss;
-  LowestPoint out;
-  out.hit = true;
-  out.z = best.z;
-  out.normal = best.normal;
-  out.t = best.t;
-  return out;
 }
 
 }  // namespace scallop

@@ -10,19 +10,23 @@
 //     flank   up to u = Rb + r pi / 2 + L - r:  rho = R, h from r to L
 // and at time t its point is (tooth_sweep.h)
 //     P(k, u, t) = tip(t) + Q(t) [ runout (cos(psi_r - phi) e1 + sin(psi_r - phi) e2)
-//                   + rho (cos(psi_k + h tan(beta) / R - phi) e1 + sin(...) e2) + h a0 ]
-// with (e1, e2, a0) the spindle frame at t = 0 (e1 = world X made perpendicular to a0,
-// world Y when a0 is within 30 degrees of X), Q(t) the axis's rotation (slerp: a turn
+//                   + (rho + dr_k) (cos(psi_k + h tan(beta) / R - phi) e1 + sin(...) e2)
+//                   + (h - da_k) a0 ]
+// with psi_k tooth k's body angle (2 pi k / flutes, or tooth_angles_deg), (dr_k, da_k)
+// its tooth_offsets, (e1, e2, a0) the spindle frame at t = 0 (e1 = world X made
+// perpendicular to a0, world Y when a0 is within 30 degrees of X; e2 = a0 x e1, or
+// e1 x a0 for a counter-clockwise spindle), Q(t) the axis's rotation (slerp: a turn
 // about w = a0 x a1 / |a0 x a1| by the angle between them times t, written here with
 // Rodrigues' formula) and phi = phaseStart + phaseRate t.
 //
 // The search: the lowest z over every k, u in [0, U], t in [0, 1] with P.xy = (x, y),
 // by best-first subdivision of the (u, t) rectangle of each tooth. A cell of half-sizes
 // (du, dt) around its centre c holds no edge point farther than
-//     B = Lu du + Lt dt   from P(c),   Lu = 1 / cos(beta),
-//     Lt = |p1 - p0| + (turn + |phaseRate|) (runout + hypot(rho(u_top), h(u_top)))
-// (|dP/du| <= Lu: the meridian is by arc length, the helix adds rho tan(beta) / R <=
-// tan(beta) across it; |dP/dt|: the tip's speed plus the rotation of the body point,
+//     B = Lu du + Lt dt   from P(c),   Lu = hypot(1, (R + |dr|max) tan(beta) / R),
+//     Lt = |p1 - p0| + (turn + |phaseRate|) (runout + hypot(rho(u_top) + |dr|max,
+//                                                           h(u_top) + |da|max))
+// (|dP/du| <= Lu: the meridian is by arc length, the helix adds (rho + dr) tan(beta) / R
+// across it; |dP/dt|: the tip's speed plus the rotation of the body point,
 // whose angular velocity is at most turn + |phaseRate|). So a cell can hold a crossing
 // only if |P(c).xy - (x, y)| <= B, and none below P(c).z - B. Cells are taken lowest
 // bound first and halved; Newton on the 2x2 system P(u, t).xy = (x, y) (clamped to the
@@ -34,8 +38,8 @@
 // is taken and it is counted in ToothStats.
 #pragma once
 
-#include "sweep/cutter.h"
 #include "base/vec3.h"
+#include "sweep/cutter.h"
 
 namespace scallop {
 namespace ref {
@@ -45,6 +49,7 @@ namespace ref {
 struct ToothMove {
   Vec3 p0, p1, a0, a1;
   double phaseStart = 0, phaseRate = 0;
+  bool counterClockwise = false;  // M4
 };
 
 // The meridian profile point at arc length u (clamped to [0, edgeLength]).

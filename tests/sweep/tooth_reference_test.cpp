@@ -56,13 +56,25 @@ struct Edges {
   double U = 0;      // edge length
   double Lu = 1;     // |dP/du| bound
   double tipSpeed = 0;
+  std::vector<double> psi;        // each tooth's body angle, rad
+  std::vector<double> dr, da;     // each tooth's offsets, mm
+  double drMost = 0, daMost = 0;  // their largest sizes
 
   Edges(const Cutter& cutter, const ToothMove& move) : c(cutter), m(move) {
     a0 = normalize(m.a0);
     const Vec3 a1 = normalize(m.a1);
     const Vec3 ref = std::fabs(a0.x) > std::cos(kPi / 6) ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
     e1 = normalize(ref - a0 * dot(ref, a0));
-    e2 = cross(a0, e1);
+    e2 = m.counterClockwise ? cross(e1, a0) : cross(a0, e1);
+    const int flutes = c.teeth.flutes;
+    for (int k = 0; k < flutes; ++k) {
+      const bool pitch = !c.teeth.toothAnglesDeg.empty(), offsets = !c.teeth.toothOffsets.empty();
+      psi.push_back(pitch ? c.teeth.toothAnglesDeg[size_t(k)] * kPi / 180 : 2 * kPi * k / flutes);
+      dr.push_back(offsets ? c.teeth.toothOffsets[size_t(k)].radial : 0);
+      da.push_back(offsets ? c.teeth.toothOffsets[size_t(k)].axial : 0);
+      drMost = std::max(drMost, std::fabs(dr.back()));
+      daMost = std::max(daMost, std::fabs(da.back()));
+    }
     const Vec3 n = cross(a0, a1);
     const double s = length(n);
     turn = std::atan2(s, dot(a0, a1));
@@ -75,7 +87,9 @@ struct Edges {
     slope = std::tan(beta) / c.radius;
     psiR = c.teeth.runoutPhaseDeg * kPi / 180;
     U = edgeLength(c);
-    Lu = 1 / std::cos(beta);
+    // |dP/du|: the meridian by arc length, and the helix's turn of a point at radius
+    // at most R + |dr|max.
+    Lu = std::hypot(1.0, (c.radius + drMost) * slope);
     tipSpeed = length(m.p1 - m.p0);
   }
 
@@ -91,22 +105,25 @@ struct Edges {
   Vec3 point(int k, double u, double t) const {
     const EdgeSpot s = spot(u);
     const double phi = m.phaseStart + m.phaseRate * t;
-    const double psi = 2 * kPi * k / c.teeth.flutes + s.h * slope - phi;
+    const double ang = psi[size_t(k)] + s.h * slope - phi;
     const Vec3 body = (e1 * std::cos(psiR - phi) + e2 * std::sin(psiR - phi)) * c.teeth.runout +
-                      (e1 * std::cos(psi) + e2 * std::sin(psi)) * s.rho + a0 * s.h;
+                      (e1 * std::cos(ang) + e2 * std::sin(ang)) * (s.rho + dr[size_t(k)]) +
+                      a0 * (s.h - da[size_t(k)]);
     return m.p0 + (m.p1 - m.p0) * t + rotate(body, t);
   }
 
   // |dP/dt| over a cell whose top (largest u) is uTop.
   double Lt(double uTop) const {
     const EdgeSpot s = spot(std::min(uTop, U));
-    return tipSpeed + (turn + std::fabs(m.phaseRate)) * (c.teeth.runout + std::hypot(s.rho, s.h));
+    return tipSpeed + (turn + std::fabs(m.phaseRate)) *
+                          (c.teeth.runout + std::hypot(s.rho + drMost, s.h + daMost));
   }
 
   // The t interval where the tip is within reach of the line: outside it no edge point
   // (all within runout + hypot(R, L) of the tip) can be on the line.
   bool window(double x, double y, double& t0, double& t1) const {
-    const double reach = c.teeth.runout + std::hypot(c.radius, c.fluteLength) + 1e-9;
+    const double reach =
+        c.teeth.runout + std::hypot(c.radius + drMost, c.fluteLength + daMost) + 1e-9;
     const double dx = m.p0.x - x, dy = m.p0.y - y;
     const double vx = m.p1.x - m.p0.x, vy = m.p1.y - m.p0.y;
     const double a = vx * vx + vy * vy, b = 2 * (dx * vx + dy * vy),

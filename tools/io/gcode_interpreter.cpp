@@ -111,11 +111,11 @@ void GcodeInterpreter::feeds(const GcodeBlock& b, const GcodeGroups& g) {
     if (!(spindleRpm_ >= 0))
       throw InputError(where_, fmt::format("S{:g}: a spindle speed must be >= 0 rpm", spindleRpm_));
   }
-  for (double m : b.m)
-    if (m == 4)
-      out_.warnings.add(where_,
-                        "M4 (counter-clockwise spindle): the teeth model turns the cutter "
-                        "clockwise (M3) as a right-hand cutter cuts; the marks are M3's");
+  // M3 / M4: the spindle's direction for the moves after them (Move::spindle).
+  for (double m : b.m) {
+    if (m == 3) spindleDirection_ = 1;
+    if (m == 4) spindleDirection_ = -1;
+  }
 }
 
 // The feed per tooth of a cutting move now, mm; 0 when the program gives none.
@@ -138,7 +138,7 @@ bool GcodeInterpreter::block(const GcodeBlock& b, int64_t line) {
   if (b.kind == GcodeBlock::Kind::Empty) return true;
   GcodeGroups g = groupGcodeWords(b, options_.machine ? &*options_.machine : nullptr, where_);
   for (const auto& [word, meaning] : g.ignored)
-    if (!(options_.teeth && word == "M4")) ignore(word, meaning);
+    if (!(options_.teeth && (word == "M3" || word == "M4"))) ignore(word, meaning);
   for (const std::string& word : g.unknownM)
     out_.warnings.add(where_,
                       "M-code " + word + " ignored (machine-specific; nothing scallop simulates)");
@@ -255,6 +255,7 @@ void GcodeInterpreter::moveTo(const State& to, bool rapid, const ArcMotion* arc)
   Move& mv = out_.path.moves.back();
   mv.tool = uint16_t(rapid ? std::max(spindle_, 0) : toolIndex());
   if (!rapid) mv.feedPerTooth = feedPerTooth(mv.tool);
+  mv.spindle = spindleDirection_;
   if (!rapid && turns) {
     out_.path.rotary.push_back(
         {state_.tilt, to.tilt, state_.spin, to.spin, tcp_, state_.pos, to.pos});

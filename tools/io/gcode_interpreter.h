@@ -68,6 +68,8 @@ class GcodeInterpreter {
   // per minute, or per revolution in G95), S (rpm) and feed mode (930, 940, 950).
   double feed_ = 0, spindleRpm_ = 0;
   int feedMode_ = 940;
+  // With teeth: 0 until M3 (1, clockwise) or M4 (-1) sets it (Move::spindle).
+  int8_t spindleDirection_ = 0;
 };
 
 }  // namespace scallop

@@ -30,7 +30,8 @@
 //            Other M codes: a warning with the line, ignored.
 //   feeds    with the teeth model (PathFileOptions::teeth) F, S and G93/G94/G95 are read:
 //            each cutting move's Move::feedPerTooth = F / (S flutes) in G94, F / flutes
-//            in G95, 0 in G93 or without S; M4 is a warning (the teeth turn as M3).
+//            in G95, 0 in G93 or without S; M3 / M4 set Move::spindle (clockwise /
+//            counter-clockwise) for the moves after them.
 // Refused with "file:line" and the reason (InputError): G41/G42 (cutter radius
 // compensation), G87, G10/G52/G92, other G words, M98/M99 and O-word subprograms, '#'
 // parameters, U V W and other letters, a word twice or two of one modal group, mixed

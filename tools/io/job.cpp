@@ -241,7 +241,7 @@ Job parseJob(const std::string& textIn, const std::string& source,
                        "tolerance; remove \"sweep\" from the job");
     rejectUnknownKeys(doc,
                       {"tool", "tools", "cutting", "stock", "grid", "path", "design",
-                       "work_offsets", "block_delete", "arc_chords", "machine"},
+                       "work_offsets", "block_delete", "arc_chords", "machine", "spindle"},
                       "");
     Job job;
     job.source = source;
@@ -259,6 +259,7 @@ Job parseJob(const std::string& textIn, const std::string& source,
     }
     if (doc.contains("cutting"))
       job.cutting = parseCuttingModel(requireObject(doc, "cutting", "cutting"));
+    job.cutting.counterClockwise = parseSpindle(doc);
     if (doc.contains("work_offsets"))
       job.workOffsets = parseWorkOffsets(requireObject(doc, "work_offsets", "work_offsets"));
     job.blockDelete = boolean(doc, "block_delete", "block_delete", false);
@@ -368,6 +369,7 @@ json jobToJson(const Job& job) {
     out["tools"] = tools;
   }
   out["cutting"] = cuttingModelToJson(job.cutting);
+  if (job.cutting.counterClockwise) out["spindle"] = "ccw";
   if (job.design)
     out["design"] = {{"stl", job.designFile}, {"gouge_tolerance", job.gougeTolerance}};
   json offsets = json::object();

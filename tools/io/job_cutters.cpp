@@ -13,9 +13,51 @@ namespace scallop {
 using nlohmann::json;
 using namespace jobfield;
 
+namespace {
+
+// A JSON number at `field` (an array entry), or an InputError saying what was expected.
+double arrayNumber(const json& v, const std::string& field, const char* expected) {
+  if (!v.is_number())
+    throw InputError(field, std::string("expected ") + expected + ", got " + v.dump());
+  return v.get<double>();
+}
+
+// "tooth_angles_deg": [deg, ...] and "tooth_offsets": [[radial_mm, axial_mm], ...], one
+// entry per flute (tooth_geometry.h checks the values).
+void parseToothGeometry(const json& tool, const std::string& f, Cutter& cutter) {
+  CutterTeeth& teeth = cutter.teeth;
+  if (tool.contains("tooth_angles_deg")) {
+    const std::string field = f + ".tooth_angles_deg";
+    const json& a = tool.at("tooth_angles_deg");
+    if (!a.is_array())
+      throw InputError(field, "expected an array of body angles in degrees, one per flute");
+    for (size_t k = 0; k < a.size(); ++k)
+      teeth.toothAnglesDeg.push_back(
+          arrayNumber(a[k], field + "[" + std::to_string(k) + "]", "a body angle in degrees"));
+  }
+  if (tool.contains("tooth_offsets")) {
+    const std::string field = f + ".tooth_offsets";
+    const json& a = tool.at("tooth_offsets");
+    const char* pair = "a pair [radial_mm, axial_mm]";
+    if (!a.is_array())
+      throw InputError(field, std::string("expected an array of ") + pair + " per flute");
+    for (size_t k = 0; k < a.size(); ++k) {
+      const std::string entry = field + "[" + std::to_string(k) + "]";
+      if (!a[k].is_array() || a[k].size() != 2)
+        throw InputError(entry, std::string("expected ") + pair + ", got " + a[k].dump());
+      teeth.toothOffsets.push_back({arrayNumber(a[k][0], entry + "[0]", "a radial offset in mm"),
+                                    arrayNumber(a[k][1], entry + "[1]", "an axial offset in mm")});
+    }
+  }
+  checkToothGeometry(teeth.toothAnglesDeg, teeth.toothOffsets, teeth.flutes, cutter.radius,
+                     cutter.bottomRadius(), f);
+}
+
+}  // namespace
+
 Cutter parseCutter(const json& tool, const std::string& f) {
-  static const std::set<std::string> teethKeys = {"flutes", "helix_deg", "runout_mm",
-                                                  "runout_phase_deg"};
+  static const std::set<std::string> teethKeys = {
+      "flutes", "helix_deg", "runout_mm", "runout_phase_deg", "tooth_angles_deg", "tooth_offsets"};
   const std::string typeName = text(tool, "type", f + ".type");
   Cutter cutter;
   if (shapedCutterTypeNames().count(typeName)) {
@@ -52,6 +94,7 @@ Cutter parseCutter(const json& tool, const std::string& f) {
   const double phase =
       number(tool, "runout_phase_deg", f + ".runout_phase_deg", &defaults.runoutPhaseDeg);
   cutter.teeth = CutterTeeth::make(int(flutes), helix, runout, phase, cutter.radius, f);
+  parseToothGeometry(tool, f, cutter);
   return cutter;
 }
 
@@ -68,6 +111,17 @@ std::map<int64_t, Cutter> parseTools(const json& tools) {
   }
   if (out.empty()) throw InputError("tools", "expected at least one tool");
   return out;
+}
+
+bool parseSpindle(const json& doc) {
+  if (!doc.contains("spindle")) return false;
+  const json& v = doc.at("spindle");
+  if (v == "cw") return false;
+  if (v == "ccw") return true;
+  throw InputError("spindle",
+                   "expected \"cw\" (clockwise seen from the shank, M3) or \"ccw\" "
+                   "(counter-clockwise, M4), got " +
+                       v.dump());
 }
 
 CuttingModel parseCuttingModel(const json& c) {
@@ -102,6 +156,12 @@ json cutterToJson(const Cutter& c) {
             {"corner_radius", c.cornerRadius}, {"flute_length", c.fluteLength},
             {"flutes", c.teeth.flutes},        {"helix_deg", c.teeth.helixDeg},
             {"runout_mm", c.teeth.runout},     {"runout_phase_deg", c.teeth.runoutPhaseDeg}};
+  if (!c.teeth.toothAnglesDeg.empty()) j["tooth_angles_deg"] = c.teeth.toothAnglesDeg;
+  if (!c.teeth.toothOffsets.empty()) {
+    json offsets = json::array();
+    for (const ToothOffset& o : c.teeth.toothOffsets) offsets.push_back({o.radial, o.axial});
+    j["tooth_offsets"] = offsets;
+  }
   // A general cutter's solid is its profile: echoed, so a report says what was swept.
   if (c.general()) j["segments"] = profileSegmentsToJson(*c.profile);
   return j;

@@ -15,7 +15,8 @@
 namespace scallop {
 
 // {"type", "radius", "corner_radius", "flute_length", "flutes", "helix_deg",
-// "runout_mm", "runout_phase_deg"} at field path `field` ("tool", "tools.2"). The
+// "runout_mm", "runout_phase_deg", "tooth_angles_deg", "tooth_offsets"} at field path
+// `field` ("tool", "tools.2"). The
 // teeth keys default to CutterTeeth's (2 flutes, no helix, no runout) and are checked
 // by CutterTeeth::make, whose messages name `field`.flutes and so on.
 Cutter parseCutter(const nlohmann::json& tool, const std::string& field);
@@ -28,6 +29,10 @@ std::map<int64_t, Cutter> parseTools(const nlohmann::json& tools);
 // left out (each move must then carry its own, e.g. G-code F / (S flutes): checked
 // once the path is read, tools/run/job_loader.h).
 CuttingModel parseCuttingModel(const nlohmann::json& cutting);
+
+// The job's "spindle": "cw" (default, false) or "ccw" (true); InputError naming
+// `spindle` otherwise.
+bool parseSpindle(const nlohmann::json& doc);
 
 const char* toString(CuttingModelKind kind);
 

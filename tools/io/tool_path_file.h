@@ -78,7 +78,7 @@ struct PathFileOptions {
   // The job's "machine": G-code rotary words A/B/C are refused without one.
   std::optional<MachineSpec> machine;
   // The job's cutting model is "teeth": G-code F and S (and G93/G94/G95) are read, not
-  // ignored, and M4 is a warning (the teeth turn clockwise, M3).
+  // ignored, and M3 / M4 set each move's spindle direction (Move::spindle).
   bool teeth = false;
   // The flute count of the job's one "tool" (with "tools", each cutter's own), for the
   // G-code feed per tooth F / (S flutes).

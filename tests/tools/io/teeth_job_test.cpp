@@ -120,14 +120,64 @@ TEST(TeethJob, GcodeFeedPerToothUsesTheFlutesOfTheToolInTheSpindle) {
   EXPECT_EQ(f.path.moves[2].feedPerTooth, 1600.0 / (8000 * 4));
 }
 
-TEST(TeethJob, M4IsAWarningWithTeethOnly) {
-  const ToolPathFile teeth = readTeeth("S9000 M4\nG0 X0 Y0 Z0\nG1 X1 F900\n");
-  ASSERT_EQ(teeth.warnings.kept.size(), 1u);
-  EXPECT_NE(teeth.warnings.kept[0].find("p.nc:1"), std::string::npos) << teeth.warnings.kept[0];
-  EXPECT_NE(teeth.warnings.kept[0].find("M3"), std::string::npos) << teeth.warnings.kept[0];
+TEST(TeethJob, M3AndM4SetTheSpindleOfTheMovesAfterThem) {
+  const ToolPathFile teeth =
+      readTeeth("S9000\nG0 X0 Y0 Z0\nG1 X1 F900\nM4\nX2\nM3\nX3\nM4\nG0 Z1\n");
+  ASSERT_EQ(teeth.path.moves.size(), 4u);
+  EXPECT_EQ(teeth.path.moves[0].spindle, 0);  // the job's direction
+  EXPECT_EQ(teeth.path.moves[1].spindle, -1);
+  EXPECT_EQ(teeth.path.moves[2].spindle, 1);
+  EXPECT_EQ(teeth.path.moves[3].spindle, -1);
+  EXPECT_TRUE(teeth.warnings.kept.empty());
+  EXPECT_FALSE(ignored(teeth, "M4"));
+  EXPECT_FALSE(ignored(teeth, "M3"));
   const ToolPathFile envelope = readTeeth("S9000 M4\nG0 X0 Y0 Z0\nG1 X1 F900\n", 2, {}, false);
   EXPECT_TRUE(envelope.warnings.kept.empty());
   EXPECT_TRUE(ignored(envelope, "M4"));
+}
+
+TEST(TeethJob, ToothGeometryAndSpindleAreReadEchoedAndChecked) {
+  const std::string tool = R"("tool": {"type": "bull", "radius": 5, "corner_radius": 2.5,
+      "flutes": 2, "tooth_angles_deg": [0, 170], "tooth_offsets": [[-0.026, 0.003], [0.011, 0]]})";
+  const std::string rest = R"("cutting": {"model": "teeth", "feed_per_tooth": 0.4},
+      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
+      "path": {"file": "p.nc"})";
+  const Job job = parseJob("{" + tool + ", " + rest + R"(, "spindle": "ccw"})", "job.json");
+  const CutterTeeth& t = job.cutter.teeth;
+  EXPECT_EQ(t.toothAnglesDeg, (std::vector<double>{0, 170}));
+  ASSERT_EQ(t.toothOffsets.size(), 2u);
+  EXPECT_EQ(t.toothOffsets[0].radial, -0.026);
+  EXPECT_EQ(t.toothOffsets[0].axial, 0.003);
+  EXPECT_TRUE(job.cutting.counterClockwise);
+  const json echo = jobToJson(job);
+  EXPECT_EQ(echo["tool"]["tooth_offsets"], json::parse("[[-0.026, 0.003], [0.011, 0]]"));
+  EXPECT_EQ(echo["tool"]["tooth_angles_deg"], json::parse("[0, 170]"));
+  EXPECT_EQ(echo["spindle"], "ccw");
+  EXPECT_FALSE(parseJob("{" + tool + ", " + rest + "}", "job.json").cutting.counterClockwise);
+
+  auto refused = [&](const std::string& toolKeys, const std::string& field,
+                     const std::string& extra = "") {
+    const std::string text = R"({"tool": {"type": "ball", "radius": 3, "flutes": 2, )" + toolKeys +
+                             "}, " + rest + extra + "}";
+    try {
+      parseJob(text, "job.json");
+      ADD_FAILURE() << "accepted " << toolKeys << extra;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  refused(R"("tooth_offsets": [[0, 0]])", "tool.tooth_offsets");
+  refused(R"("tooth_offsets": [[0, 0], [0, 0], [0, 0]])", "tool.tooth_offsets");
+  refused(R"("tooth_offsets": [[0, 0], [0, "a"]])", "tool.tooth_offsets[1][1]");
+  refused(R"("tooth_offsets": [[0, 0], [0.001]])", "tool.tooth_offsets[1]");
+  refused(R"("tooth_offsets": {"0": [0, 0]})", "tool.tooth_offsets");
+  refused(R"("tooth_offsets": [[0, 0], [-0.001, 0]])", "tool.tooth_offsets[1][0]");
+  refused(R"("tooth_angles_deg": [0, "x"])", "tool.tooth_angles_deg[1]");
+  refused(R"("tooth_angles_deg": [0, 200, 100])", "tool.tooth_angles_deg");
+  refused(R"("tooth_angles_deg": [0, 0])", "tool.tooth_angles_deg[1]");
+  refused(R"("tooth_angles_deg": [5, 180])", "tool.tooth_angles_deg[0]");
+  refused(R"("helix_deg": 0)", "spindle", R"(, "spindle": "left")");
+  refused(R"("helix_deg": 0)", "spindle", R"(, "spindle": 3)");
 }
 
 class TeethJobFiles : public scallop::test::CliFixture {};

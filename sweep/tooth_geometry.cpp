@@ -1,0 +1,65 @@
+#include "sweep/tooth_geometry.h"
+
+#include <cmath>
+
+#include "base/input_error.h"
+
+namespace scallop {
+
+namespace {
+
+std::string entry(const std::string& field, size_t k) {
+  return field + "[" + std::to_string(k) + "]";
+}
+
+std::string mm(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+}  // namespace
+
+void checkToothGeometry(const std::vector<double>& anglesDeg,
+                        const std::vector<ToothOffset>& offsets, int flutes, double radius,
+                        double bottomRadius, const std::string& fieldPrefix) {
+  const std::string angles = fieldPrefix + ".tooth_angles_deg";
+  const std::string count = std::to_string(flutes) + " (one per flute)";
+  if (!anglesDeg.empty()) {
+    if (anglesDeg.size() != size_t(flutes))
+      throw InputError(
+          angles, "expected " + count + " body angles, got " + std::to_string(anglesDeg.size()));
+    for (size_t k = 0; k < anglesDeg.size(); ++k) {
+      const double a = anglesDeg[k];
+      if (!std::isfinite(a) || (k == 0 && a != 0) || a >= 360 || (k > 0 && !(a > anglesDeg[k - 1])))
+        throw InputError(entry(angles, k),
+                         "body angles in degrees must start at 0, increase strictly and stay "
+                         "below 360, got " +
+                             mm(a));
+    }
+  }
+  if (offsets.empty()) return;
+  const std::string field = fieldPrefix + ".tooth_offsets";
+  if (offsets.size() != size_t(flutes))
+    throw InputError(field, "expected " + count + " [radial_mm, axial_mm] pairs, got " +
+                                std::to_string(offsets.size()));
+  // Offsets are errors of microns; beyond R / 10 the edges are another cutter's, and the
+  // spindle envelope (Cutter::spindleEnvelope) would be a poor bound.
+  const double most = 0.1 * radius;
+  for (size_t k = 0; k < offsets.size(); ++k) {
+    const ToothOffset& o = offsets[k];
+    if (!std::isfinite(o.radial) || !std::isfinite(o.axial) || std::abs(o.radial) > most ||
+        std::abs(o.axial) > most)
+      throw InputError(entry(field, k), "offsets must be finite and within radius / 10 (" +
+                                            mm(most) + " mm), got [" + mm(o.radial) + ", " +
+                                            mm(o.axial) + "]");
+    if (o.radial < -bottomRadius)
+      throw InputError(entry(field, k) + "[0]",
+                       "a radial offset below -(R - r) = " + mm(-bottomRadius) +
+                           " mm carries the edge across the axis (give the other teeth "
+                           "positive offsets instead), got " +
+                           mm(o.radial));
+  }
+}
+
+}  // namespace scallop
