@@ -80,6 +80,13 @@ ToolPath pathInFrame(const ToolPath& path, const GridFrame& frame) {
       pose->axis = frame.directionToFrame(pose->axis);
     }
   }
+  // An arc's circle: its centre a point, u and v directions (n = u x v turns with them:
+  // the frame's rotation is proper, v = normal x u).
+  for (ArcMotion& arc : out.arcs) {
+    arc.centre = frame.pointToFrame(arc.centre);
+    arc.u = frame.directionToFrame(arc.u);
+    arc.v = frame.directionToFrame(arc.v);
+  }
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "base/constants.h"
 #include "base/input_error.h"
 #include "raycast/simulation.h"
+#include "sweep/pose_curve.h"
 #include "sweep/raster.h"
 
 namespace scallop {
@@ -24,6 +25,34 @@ std::string whereOf(const std::function<void()>& f) {
     return e.where();
   }
   return "no error";
+}
+
+// A path moved into a frame moves its arcs too: every tip of an arc move (a helix about
+// a tilted axis) is the world tip seen in the frame.
+TEST(GridFrame, ArcsMoveIntoTheFrameWithTheirMoves) {
+  const GridFrame frame =
+      makeGridFrame({1, -2, 0.5}, normalize(Vec3{0.6, 0.8, 0}), normalize(Vec3{0.8, -0.6, 1}), 10,
+                    10, HUGE_VAL, "grid.frame");
+  ToolPath path;
+  ArcMotion arc;
+  arc.centre = {2, 1, -0.5};
+  arc.u = normalize(Vec3{1, 0, 0.2});
+  arc.v = normalize(cross(Vec3{0.1, 0, 1}, arc.u));
+  arc.angle0 = 0.4, arc.sweep = -2.5, arc.radius0 = 3, arc.radius1 = 3.001, arc.rise = 0.7;
+  path.arcs.push_back(arc);
+  Move m;
+  m.from = {arc.at(0), {0, 0, 1}};
+  m.to = {arc.at(1), {0, 0, 1}};
+  m.arc = 1;
+  path.moves.push_back(m);
+  const ToolPath inFrame = pathInFrame(path, frame);
+  const PoseCurve world = PoseCurve::ofMove(path, path.moves[0]);
+  const PoseCurve seen = PoseCurve::ofMove(inFrame, inFrame.moves[0]);
+  for (int k = 0; k <= 16; ++k) {
+    const double t = k / 16.0;
+    const Vec3 want = frame.pointToFrame(world.tip(t)), got = seen.tip(t);
+    EXPECT_LT(length(got - want), 1e-12) << "t = " << t;
+  }
 }
 
 TEST(GridFrame, ZeroOrParallelVectorsAreErrorsNamingTheField) {
