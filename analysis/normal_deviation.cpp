@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <tuple>
+#include <unordered_map>
 #include <utility>
 
 #include "analysis/vertex_normals.h"
@@ -113,9 +116,19 @@ struct VertexResult {
   uint32_t candidates, evaluations;
 };
 
+// One thread's scratch. Moves are swept in the frame of the line's rotation alone (origin
+// at the part's origin), which every vertex with the same normal shares: consecutive
+// vertices with one normal (a flat face, vertices visited in the order of their normals)
+// reuse the swept moves. The heights do not depend on it: the frame is the normal's.
+struct LineScratch {
+  std::vector<std::pair<double, size_t>> order;
+  Vec3 normal{0, 0, 0};
+  std::unordered_map<size_t, std::unique_ptr<const SweptMove>> swept;  // null: k < 0
+};
+
 VertexResult deviationAt(const Vec3& p, const Vec3& n, const ToolPath& path, const Cutter& cutter,
                          const std::vector<MoveBounds>& moves, const Box3& stock, double depth,
-                         std::vector<std::pair<double, size_t>>& order) {
+                         LineScratch& scratch) {
   VertexResult r{NAN, VertexDeviation::kUnresolved, 0, 0};
   if (!(length(n) > 0)) return r;
   const GridFrame f = lineFrame(p, n, depth);
@@ -124,6 +137,7 @@ VertexResult deviationAt(const Vec3& p, const Vec3& n, const ToolPath& path, con
     r.status = VertexDeviation::kNoMaterial;
     return r;
   }
+  std::vector<std::pair<double, size_t>>& order = scratch.order;
   order.clear();
   for (size_t k = 0; k < moves.size(); ++k) {
     const double bound = lowerBoundOnLine(moves[k], f, top);
@@ -131,21 +145,29 @@ VertexResult deviationAt(const Vec3& p, const Vec3& n, const ToolPath& path, con
   }
   r.candidates = uint32_t(order.size());
   std::sort(order.begin(), order.end());
+  if (!(scratch.normal == n)) scratch.swept.clear(), scratch.normal = n;
+  const GridFrame rotation = lineFrame({0, 0, 0}, n, depth);
+  // The line in the rotation's frame: the vertical through (x0, y0), w = z - np.
+  const double x0 = dot(p, rotation.u), y0 = dot(p, rotation.v), np = dot(p, n);
   double best = top;
   bool unresolved = false;
   for (const auto& [bound, k] : order) {
     if (bound >= best) break;  // this move and every later one stay above `best`
-    const Move& m = path.moves[moves[k].move];
-    const ToolPath one = moveInFrame(path, m, f);
-    if (!axisOnNormalSide(one.moves[0])) {
+    auto [slot, fresh] = scratch.swept.try_emplace(k);
+    if (fresh) {
+      const Move& m = path.moves[moves[k].move];
+      const ToolPath one = moveInFrame(path, m, rotation);
+      const Cutter& c = path.cutters.empty() ? cutter : path.cutters[m.tool];
+      if (axisOnNormalSide(one.moves[0]))
+        slot->second = std::make_unique<const SweptMove>(c, PoseCurve::ofMove(one, one.moves[0]));
+    }
+    if (!slot->second) {
       unresolved = true;
       continue;
     }
-    const Cutter& c = path.cutters.empty() ? cutter : path.cutters[m.tool];
-    const SweptMove swept(c, PoseCurve::ofMove(one, one.moves[0]));
     ++r.evaluations;
-    const LowestPoint lp = swept.lowestPoint(0, 0, nullptr, best);
-    if (lp.hit && lp.z < best) best = lp.z;
+    const LowestPoint lp = slot->second->lowestPoint(x0, y0, nullptr, best + np);
+    if (lp.hit && lp.z - np < best) best = lp.z - np;
   }
   if (unresolved) return r;
   if (best < -depth) {
@@ -175,13 +197,24 @@ NormalDeviation normalDeviation(const Cutter& cutter, const ToolPath& path, cons
   NormalDeviation out;
   out.normals = areaWeightedVertexNormals(design);
   const size_t n = design.vertices.size();
+  // Vertices in the order of their normals, so that those sharing one follow each other.
+  std::vector<size_t> byNormal(n);
+  for (size_t v = 0; v < n; ++v) byNormal[v] = v;
+  const auto key = [&](size_t v) {
+    const Vec3& a = out.normals[v];
+    return std::tuple(a.x, a.y, a.z, v);
+  };
+  std::sort(byNormal.begin(), byNormal.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
   std::vector<VertexResult> results(n);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
-    std::vector<std::pair<double, size_t>> order;
-    for (size_t v = r.begin(); v < r.end(); ++v)
-      results[v] = deviationAt(design.vertices[v], out.normals[v], path, cutter, moves, stock,
-                               gougeDepth, order);
-  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      LineScratch scratch;
+                      for (size_t k = r.begin(); k < r.end(); ++k) {
+                        const size_t v = byNormal[k];
+                        results[v] = deviationAt(design.vertices[v], out.normals[v], path, cutter,
+                                                 moves, stock, gougeDepth, scratch);
+                      }
+                    });
 
   out.deviation.resize(n);
   out.status.resize(n);
