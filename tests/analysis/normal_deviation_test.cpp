@@ -5,9 +5,11 @@
 #include "analysis/normal_deviation.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "analysis/vertex_normals.h"
@@ -107,6 +109,25 @@ TEST(NormalDeviation, BallPassesAlongACylinderGiveTheClosedFormOnTopAndOnTheSide
     ASSERT_NEAR(design.vertices[v].y, job.rho * std::cos(phiDeg * kDeg), 1e-12);
     EXPECT_NEAR(d.deviation[v], job.cuspHeight(), 1e-6) << phiDeg << " degrees";
   }
+}
+
+TEST(NormalDeviation, OneThreadGivesTheSameBits) {
+  const CylinderJob job;
+  const TriangleMesh design = gridMesh(4, 40, [&](int i, int j) {
+    const double phi = (2.5 * j + 0.3 * i) * kDeg;  // every vertex its own normal
+    return Vec3{double(i), job.rho * std::cos(phi), job.rho * std::sin(phi)};
+  });
+  const NormalDeviation all = normalDeviation(job.cutter, job.path, job.stock, design, 1.0);
+  NormalDeviation one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = normalDeviation(job.cutter, job.path, job.stock, design, 1.0);
+  }
+  ASSERT_EQ(all.deviation.size(), one.deviation.size());
+  for (size_t v = 0; v < all.deviation.size(); ++v)
+    EXPECT_EQ(std::memcmp(&all.deviation[v], &one.deviation[v], sizeof(double)), 0) << v;
+  EXPECT_EQ(all.exactEvaluations, one.exactEvaluations);
+  EXPECT_EQ(all.unresolved + all.noMaterial, 0);
 }
 
 TEST(NormalDeviation, PlaneMachinedByARasterIsTheZMapLessThePlane) {
