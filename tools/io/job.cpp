@@ -295,11 +295,17 @@ Job parseJob(const std::string& textIn, const std::string& source,
 
     if (doc.contains("design")) {
       const json& design = requireObject(doc, "design", "design");
-      rejectUnknownKeys(design, {"stl", "gouge_tolerance"}, "design");
+      rejectUnknownKeys(design, {"stl", "gouge_tolerance", "normal_deviation", "gouge_depth"},
+                        "design");
       job.designFile = besideJob(text(design, "stl", "design.stl"));
       job.gougeTolerance =
           number(design, "gouge_tolerance", "design.gouge_tolerance", &job.gougeTolerance);
       if (job.gougeTolerance < 0) throw InputError("design.gouge_tolerance", "must be >= 0 mm");
+      job.normalDeviation = boolean(design, "normal_deviation", "design.normal_deviation", false);
+      job.gougeDepth = number(design, "gouge_depth", "design.gouge_depth", &job.gougeDepth);
+      if (!(job.gougeDepth > 0))
+        throw InputError("design.gouge_depth",
+                         "must be > 0 mm (how far below the design surface a cut still counts)");
     }
 
     const json pathDoc =
@@ -370,8 +376,11 @@ json jobToJson(const Job& job) {
   }
   out["cutting"] = cuttingModelToJson(job.cutting);
   if (job.cutting.counterClockwise) out["spindle"] = "ccw";
-  if (job.design)
+  if (job.design) {
     out["design"] = {{"stl", job.designFile}, {"gouge_tolerance", job.gougeTolerance}};
+    if (job.normalDeviation)
+      out["design"].update({{"normal_deviation", true}, {"gouge_depth", job.gougeDepth}});
+  }
   json offsets = json::object();
   for (int k = 0; k < 6; ++k) {
     const Vec3& o = job.workOffsets[size_t(k)];

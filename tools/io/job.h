@@ -64,6 +64,11 @@ struct Job {
   std::string designFile;                      // resolved; empty without a design
   std::shared_ptr<const TriangleMesh> design;  // read by loadJobInputs
   double gougeTolerance = 1e-3;                // mm below the design that is a gouge
+  // "normal_deviation": true: deviation.ply along the vertex normals (CONVENTIONS.md
+  // "Normal deviation on a design surface"); cuts deeper than gouge_depth (mm) below the
+  // design surface do not count.
+  bool normalDeviation = false;
+  double gougeDepth = 1;
 
   GridSpec grid() const;
   // The stock's highest point on the map's lines: stock.max.z, or in a frame the box's

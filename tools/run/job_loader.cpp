@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "analysis/vertex_normals.h"
 #include "base/input_error.h"
 #include "sweep/tool_path_sweep.h"
 #include "tools/io/stl_io.h"
@@ -135,6 +136,21 @@ void placePathInFrame(Job& job) {
   }
 }
 
+// The normal deviation moves each move into the frame of each vertex line: the part
+// frame's CL data only (rotary moves are machine angles of the part frame), with the
+// envelope, and a design whose facets agree on their outside.
+void checkNormalDeviationInputs(const Job& job) {
+  if (!job.path.rotary.empty())
+    throw InputError("design.normal_deviation",
+                     "a 5-axis machine's rotary moves (\"machine\") are not supported; write "
+                     "the path as CL data (tip and axis) or leave out normal_deviation");
+  if (job.cutting.teeth())
+    throw InputError("design.normal_deviation",
+                     "the teeth cutting model is not supported; use cutting.model \"envelope\" "
+                     "or leave out normal_deviation");
+  requireConsistentOrientation(*job.design, job.designFile);
+}
+
 }  // namespace
 
 void loadJobInputs(Job& job, bool checkMemory) {
@@ -150,6 +166,7 @@ void loadJobInputs(Job& job, bool checkMemory) {
     }
     checkTeethInputs(job);
     if (job.frame) placePathInFrame(job);
+    if (job.normalDeviation) checkNormalDeviationInputs(job);
   } catch (const InputError& e) {
     throwFromJob(e, job.source);
   }

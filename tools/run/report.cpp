@@ -102,6 +102,8 @@ json simulationReport(const RunRecord& run) {
   if (!run.feedMarks.is_null()) r["feed_marks"] = run.feedMarks;
   if (!run.pathFile.is_null()) r["path_file"] = run.pathFile;
   if (!run.design.is_null()) r["design"] = run.design, r["outputs"].push_back("deviation.png");
+  if (run.design.contains("normal_deviation") && run.design["normal_deviation"].contains("mesh"))
+    r["outputs"].push_back("deviation.ply");
   return r;
 }
 

@@ -14,6 +14,7 @@
 #include "tools/render/preview_png.h"
 #include "tools/run/feed_mark_report.h"
 #include "tools/run/memory_limits.h"
+#include "tools/run/normal_deviation_report.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
 #include "tools/run/simulation_plan.h"
@@ -112,6 +113,8 @@ json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& 
 
   RunRecord run = inMemoryRecord(job, plan, settings, h);
   run.design = job.design ? designReport(job, map, settings.outDir, settings.quiet) : json();
+  if (job.normalDeviation)
+    run.design["normal_deviation"] = normalDeviationReport(job, settings.outDir, settings.quiet);
   run.writeSeconds = secondsSince(tWrite);
   run.totalSeconds = secondsSince(tStart);
   const json report = simulationReport(run);
@@ -191,6 +194,8 @@ ComputedSimulation computeSimulation(const Job& job, const RunSettings& settings
   RunRecord run = inMemoryRecord(job, plan, settings, h);
   // No outDir: the comparison without its picture.
   run.design = job.design ? designReport(job, h.sim.map, "", settings.quiet) : json();
+  if (job.normalDeviation)
+    run.design["normal_deviation"] = normalDeviationReport(job, "", settings.quiet);
   run.totalSeconds = secondsSince(tStart);
   json report = simulationReport(run);
   report["outputs"] = json::array();

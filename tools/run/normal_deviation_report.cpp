@@ -1,0 +1,81 @@
+#include "tools/run/normal_deviation_report.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "analysis/normal_deviation.h"
+#include "tools/io/job.h"
+#include "tools/io/ply_writer.h"
+
+namespace scallop {
+
+namespace {
+
+constexpr int kHistogramBins = 20;
+
+nlohmann::json statistics(const std::vector<double>& deviation, double gougeTolerance) {
+  std::vector<double> values;
+  for (double w : deviation)
+    if (!std::isnan(w)) values.push_back(w);
+  if (values.empty()) return {{"vertices", 0}};
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  double sum = 0, squares = 0;
+  int64_t gouged = 0;
+  for (double w : values) sum += w, squares += w * w, gouged += w < -gougeTolerance;
+  const double n = double(values.size()), width = (*hi - *lo) / kHistogramBins;
+  std::vector<int64_t> counts(kHistogramBins, 0);
+  for (double w : values) {
+    const int bin = width > 0 ? int((w - *lo) / width) : 0;
+    ++counts[size_t(std::clamp(bin, 0, kHistogramBins - 1))];
+  }
+  return {{"vertices", values.size()},
+          {"min_mm", *lo},
+          {"max_mm", *hi},
+          {"mean_mm", sum / n},
+          {"rms_mm", std::sqrt(squares / n)},
+          {"gouged_vertices", gouged},
+          {"histogram", {{"from_mm", *lo}, {"bin_width_mm", width}, {"counts", counts}}}};
+}
+
+}  // namespace
+
+nlohmann::json normalDeviationReport(const Job& job, const std::string& outDir, bool quiet) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const NormalDeviation d =
+      normalDeviation(job.cutter, job.path, job.stock, *job.design, job.gougeDepth);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  nlohmann::json r = statistics(d.deviation, job.gougeTolerance);
+  r["gouge_depth_mm"] = job.gougeDepth;
+  r["cut_through_vertices"] = d.cutThrough;
+  r["no_material_vertices"] = d.noMaterial;
+  r["unresolved_vertices"] = d.unresolved;
+  r["candidate_moves"] = d.candidates;
+  r["exact_evaluations"] = d.exactEvaluations;
+  r["seconds"] = seconds;
+  if (!outDir.empty()) {
+    writeVertexValuesPly(
+        *job.design, d.deviation, "deviation",
+        {"scallop normal deviation of " + std::filesystem::path(job.designFile).filename().string(),
+         "deviation: mm along the vertex normal from the design to the machined surface, "
+         "positive = material left; NaN = no material or unresolved"},
+        (std::filesystem::path(outDir) / "deviation.ply").string());
+    r["mesh"] = "deviation.ply";
+  }
+  if (!quiet) {
+    std::fprintf(stderr, "design: normal deviation at %zu vertices", job.design->vertices.size());
+    if (r.contains("min_mm"))
+      std::fprintf(stderr, " in [%.6f, %.6f] mm, rms %.6f mm", r["min_mm"].get<double>(),
+                   r["max_mm"].get<double>(), r["rms_mm"].get<double>());
+    std::fprintf(stderr, "; %lld cut through, %lld without material, %lld unresolved\n",
+                 (long long)d.cutThrough, (long long)d.noMaterial, (long long)d.unresolved);
+  }
+  return r;
+}
+
+}  // namespace scallop
