@@ -15,6 +15,7 @@
 #include "tools/io/gcode_block.h"
 #include "tools/io/job_cutters.h"
 #include "tools/io/job_fields.h"
+#include "tools/io/stl_io.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
@@ -274,12 +275,19 @@ Job parseJob(const std::string& textIn, const std::string& source,
     };
 
     const json& stock = requireObject(doc, "stock", "stock");
-    rejectUnknownKeys(stock, {"min", "max"}, "stock");
-    job.stock.extend(point(stock, "min", "stock.min"));
-    const Vec3 mx = point(stock, "max", "stock.max");
-    if (!(mx.x > job.stock.min.x && mx.y > job.stock.min.y && mx.z > job.stock.min.z))
-      throw InputError("stock.max", "must be greater than stock.min in x, y and z");
-    job.stock.extend(mx);
+    if (stock.contains("stl")) {
+      rejectUnknownKeys(stock, {"stl"}, "stock");
+      job.stockStlFile = besideJob(text(stock, "stl", "stock.stl"));
+      job.stockSolid = readStockSolid(job.stockStlFile);
+      job.stock = job.stockSolid->bounds();
+    } else {
+      rejectUnknownKeys(stock, {"min", "max"}, "stock");
+      job.stock.extend(point(stock, "min", "stock.min"));
+      const Vec3 mx = point(stock, "max", "stock.max");
+      if (!(mx.x > job.stock.min.x && mx.y > job.stock.min.y && mx.z > job.stock.min.z))
+        throw InputError("stock.max", "must be greater than stock.min in x, y and z");
+      job.stock.extend(mx);
+    }
 
     const json& grid = requireObject(doc, "grid", "grid");
     rejectUnknownKeys(grid, {"spacing", "frame"}, "grid");
@@ -324,6 +332,17 @@ Job parseJob(const std::string& textIn, const std::string& source,
   }
 }
 
+std::shared_ptr<const StockSolid> readStockSolid(const std::string& path) {
+  TriangleMesh mesh;
+  try {
+    mesh = readStl(path);
+  } catch (const InputError& e) {
+    throw InputError("stock.stl", e.what());
+  }
+  checkClosedSolid(mesh, "stock.stl (" + path + ")");
+  return std::make_shared<const StockSolid>(std::move(mesh));
+}
+
 void throwFromJob(const InputError& e, const std::string& source) {
   // Lead every field error with the file it came from.
   if (e.where().rfind(source, 0) == 0) throw e;
@@ -335,6 +354,7 @@ json jobToJson(const Job& job) {
                {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
                 {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}}},
               {"grid", {{"spacing", job.spacing}}}};
+  if (job.stockSolid) out["stock"]["stl"] = job.stockStlFile;
   if (job.frame) {
     const GridFrame& f = *job.frame;
     auto vec = [](const Vec3& p) { return json{p.x, p.y, p.z}; };

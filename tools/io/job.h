@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/stock_solid.h"
 #include "analysis/triangle_mesh.h"
 #include "base/vec3.h"
 #include "raycast/grid_frame.h"
@@ -44,8 +45,13 @@ struct Job {
   bool arcChords = false;
   // "machine": a 5-axis machine for G-code rotary words (CONVENTIONS.md "Machines").
   std::optional<MachineSpec> machine;
+  // "stock": a box {"min", "max"}, or {"stl": FILE} a closed solid (CONVENTIONS.md
+  // "Stock"): then `stock` is the solid's bounding box (the grid's extent) and the
+  // heights start from `stockSolid`.
   Box3 stock;
-  double spacing = 0;  // grid cell side, mm
+  std::string stockStlFile;                      // resolved; empty for a box
+  std::shared_ptr<const StockSolid> stockSolid;  // read while parsing
+  double spacing = 0;                            // grid cell side, mm
   // "grid": {"frame": {...}}: a map along any direction (CONVENTIONS.md "Frames"). Once
   // loaded (tools/run/job_loader.h), `path` is in the frame's coordinates.
   std::optional<GridFrame> frame;
@@ -87,7 +93,13 @@ Job parseJob(const std::string& text, const std::string& source,
 
 // Rethrows `e`, an error met while reading the job from `source`, with `source`
 // leading its place (unless it already does): "job.json: grid.spacing: ...".
-[[noreturn]] void throwFromJob(const InputError& e, const std::string& source);
+[[noreturn]]  // The closed solid of a job's "stock": {"stl": path}; InputError naming stock.stl
+              // when
+              // the file cannot be read or is not a closed, consistently oriented solid.
+              std::shared_ptr<const StockSolid>
+              readStockSolid(const std::string& path);
+
+void throwFromJob(const InputError& e, const std::string& source);
 
 // Refuses a path with a tip beyond +-1e6 mm (1 km) in x, y or z, as the job's own
 // numbers are bounded: the geometry's squares and tile counts stay far from
