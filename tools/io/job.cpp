@@ -1,5 +1,7 @@
 #include "tools/io/job.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,7 +14,10 @@
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "raycast/stock_map.h"
+#include "tools/io/file_names.h"
 #include "tools/io/gcode_block.h"
+#include "tools/io/height_export.h"
 #include "tools/io/job_cutters.h"
 #include "tools/io/job_fields.h"
 #include "tools/io/stl_io.h"
@@ -191,6 +196,11 @@ GridSpec Job::grid() const {
   return gridCovering(stock.min.x, stock.min.y, stock.max.x, stock.max.y, spacing);
 }
 
+void Job::fillStockHeights(ZMap& map) const {
+  if (stockSolid) stockSolid->fillHeights(map);
+  if (stockMap) fillFromHeightMap(map, *stockMap);
+}
+
 double Job::stockTop() const {
   return frame ? stockTopInFrame(stock, *frame) : stock.max.z;
 }
@@ -280,6 +290,11 @@ Job parseJob(const std::string& textIn, const std::string& source,
       job.stockStlFile = besideJob(text(stock, "stl", "stock.stl"));
       job.stockSolid = readStockSolid(job.stockStlFile);
       job.stock = job.stockSolid->bounds();
+    } else if (stock.contains("gsf")) {
+      rejectUnknownKeys(stock, {"gsf", "min", "max"}, "stock");
+      job.stockGsfFile = besideJob(text(stock, "gsf", "stock.gsf"));
+      job.stockMap = readStockMap(job.stockGsfFile);
+      job.stock = stockMapBox(*job.stockMap, stock);
     } else {
       rejectUnknownKeys(stock, {"min", "max"}, "stock");
       job.stock.extend(point(stock, "min", "stock.min"));
@@ -332,6 +347,42 @@ Job parseJob(const std::string& textIn, const std::string& source,
   }
 }
 
+std::shared_ptr<const ZMap> readStockMap(const std::string& path) {
+  if (lowerExtension(path) != ".gsf")
+    throw InputError("stock.gsf", path + ": expected a .gsf height map (a previous run's)");
+  try {
+    return std::make_shared<const ZMap>(readHeightFile(path));
+  } catch (const InputError& e) {
+    throw InputError("stock.gsf", e.what());
+  }
+}
+
+Box3 stockMapBox(const ZMap& map, const nlohmann::json& stock) {
+  const GridSpec& g = map.grid();
+  Box3 box;
+  double low = HUGE_VAL, high = -HUGE_VAL;
+  for (double h : map.heights())
+    if (!std::isnan(h)) low = std::min(low, h), high = std::max(high, h);
+  if (!(low <= high)) throw InputError("stock.gsf", "holds no material (every cell is void)");
+  const double x1 = g.originX + double(g.nx) * g.spacing, y1 = g.originY + double(g.ny) * g.spacing;
+  if (!stock.contains("min") && !stock.contains("max")) {
+    box.extend({g.originX, g.originY, low});
+    box.extend({x1, y1, high});
+    return box;
+  }
+  const Vec3 mn = point(stock, "min", "stock.min"), mx = point(stock, "max", "stock.max");
+  if (!(mx.x > mn.x && mx.y > mn.y))
+    throw InputError("stock.max", "must be greater than stock.min in x and y");
+  if (mn.x < g.originX || mn.y < g.originY || mx.x > x1 || mx.y > y1)
+    throw InputError("stock.gsf",
+                     fmt::format("its grid [{:g}, {:g}] x [{:g}, {:g}] mm does not cover the "
+                                 "job's grid [{:g}, {:g}] x [{:g}, {:g}] mm (stock.min, stock.max)",
+                                 g.originX, x1, g.originY, y1, mn.x, mx.x, mn.y, mx.y));
+  box.extend({mn.x, mn.y, low});
+  box.extend({mx.x, mx.y, high});
+  return box;
+}
+
 std::shared_ptr<const StockSolid> readStockSolid(const std::string& path) {
   TriangleMesh mesh;
   try {
@@ -355,6 +406,7 @@ json jobToJson(const Job& job) {
                 {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}}},
               {"grid", {{"spacing", job.spacing}}}};
   if (job.stockSolid) out["stock"]["stl"] = job.stockStlFile;
+  if (job.stockMap) out["stock"]["gsf"] = job.stockGsfFile;
   if (job.frame) {
     const GridFrame& f = *job.frame;
     auto vec = [](const Vec3& p) { return json{p.x, p.y, p.z}; };

@@ -102,10 +102,10 @@ void checkTeethInputs(const Job& job) {
 // normal side (k >= 0 in the frame), as k >= 0 is required without a frame.
 void placePathInFrame(Job& job) {
   const GridFrame& frame = *job.frame;
-  if (job.stockSolid)
+  if (job.shapedStock())
     throw InputError("grid.frame",
-                     "a stock solid (stock.stl) is not supported in a frame; give the stock as "
-                     "a box or leave out grid.frame");
+                     "a stock of any shape (stock.stl, stock.gsf) is not supported in a frame; "
+                     "give the stock as a box or leave out grid.frame");
   if (!job.path.rotary.empty())
     throw InputError("grid.frame",
                      "a 5-axis machine's rotary moves (\"machine\") are not supported in a frame; "

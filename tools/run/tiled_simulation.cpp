@@ -147,11 +147,11 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
   for (int64_t b = first; b < end; ++b) {
     ZMap band(layout.bandGrid(b, grid), job.stock.max.z);
     if (job.frame) fillFrameStock(band, job.stock, *job.frame);
-    if (job.stockSolid) job.stockSolid->fillHeights(band);
+    if (job.shapedStock()) job.fillStockHeights(band);
     const CastStats cast = castZMap(*scene, band, options.cast);
     FrameCellCounts frameCells;
     if (job.frame) frameCells = finishFrameMap(band, *job.frame);
-    if (job.stockSolid) frameCells = finishStockMap(band);
+    if (job.shapedStock()) frameCells = finishStockMap(band);
     doneCells += band.grid().cells();
     json stats = {{"rows", {layout.firstRow(b), layout.endRow(b, grid)}},
                   {"cells", cast.cells},
@@ -162,7 +162,7 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
                   {"max_height", band.maxHeight()},
                   {"threads", threads}};
     if (job.isRaster && !job.frame) stats["raster"] = rasterMeasurements(job, band);
-    if (job.frame || job.stockSolid) stats["frame"] = frameCellsJson(frameCells);
+    if (job.frame || job.shapedStock()) stats["frame"] = frameCellsJson(frameCells);
     if (output) {
       output->add(band, stats);
     } else {

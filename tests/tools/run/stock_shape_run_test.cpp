@@ -1,8 +1,9 @@
-// Jobs with "stock": {"stl": ...} (CONVENTIONS.md "Stock"): a faceted cone blank
+// Jobs with "stock": {"stl": ...} or {"gsf": ...} (CONVENTIONS.md "Stock of any
+// shape"): a run on a previous run's heights continues it bit for bit; a faceted cone blank
 // machined by a raster keeps the cone's closed-form heights where it is not cut and
 // holds no material (NaN) off its base; the rapid warning is judged against the cone,
 // not its bounding box; a stock STL that is not closed, or missing, is an error naming
-// stock.stl with nothing written.
+// stock.stl with nothing written; so is a GSF that does not cover the grid, or missing.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,7 +69,7 @@ double coneTop(double x, double y) {
   return along > apothem ? NAN : -kHeight * along / apothem;
 }
 
-class StockSolidRun : public test::CliFixture {
+class StockShapeRun : public test::CliFixture {
  protected:
   std::string errorOf(const fs::path& jobFile) {
     try {
@@ -80,7 +81,7 @@ class StockSolidRun : public test::CliFixture {
   }
 };
 
-TEST_F(StockSolidRun, UncutCellsOfAConeBlankHoldTheConesHeights) {
+TEST_F(StockShapeRun, UncutCellsOfAConeBlankHoldTheConesHeights) {
   write("cone.stl", coneStl());
   const fs::path job = write("j.json", R"({"tool": {"type": "ball", "radius": 1},
     "stock": {"stl": "cone.stl"}, "grid": {"spacing": 0.25},
@@ -113,7 +114,7 @@ TEST_F(StockSolidRun, UncutCellsOfAConeBlankHoldTheConesHeights) {
   EXPECT_GT(voids, 500);
 }
 
-TEST_F(StockSolidRun, RapidsAreJudgedAgainstTheSolidNotItsBox) {
+TEST_F(StockShapeRun, RapidsAreJudgedAgainstTheSolidNotItsBox) {
   write("cone.stl", coneStl());
   // Line 4's rapid runs along x = 18.5 at z = -0.5: inside the cone's box, below its
   // top, but the cone within the ball's reach there is lower than -3.7. Line 10's
@@ -134,7 +135,7 @@ TEST_F(StockSolidRun, RapidsAreJudgedAgainstTheSolidNotItsBox) {
   EXPECT_EQ(box.pathWarnings.total, 2u);
 }
 
-TEST_F(StockSolidRun, AStockThatIsNotAClosedSolidIsAnErrorAndWritesNothing) {
+TEST_F(StockShapeRun, AStockThatIsNotAClosedSolidIsAnErrorAndWritesNothing) {
   write("line.txt", "0 5 -0.5\n10 5 -0.5\n");
   write("hole.stl", coneStl(5));
   write("flipped.stl", coneStl(-1, true));
@@ -153,6 +154,48 @@ TEST_F(StockSolidRun, AStockThatIsNotAClosedSolidIsAnErrorAndWritesNothing) {
     const test::CliRun r = run("simulate " + path("bad.json") + " -o " + path("out"));
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("bad.json: stock.stl"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
+  }
+}
+
+ZMap heightsOf(const fs::path& jobFile) {
+  RunSettings settings;
+  settings.quiet = true;
+  return computeSimulation(loadJobFile(jobFile.string()), settings).map;
+}
+
+TEST_F(StockShapeRun, ARunOnAPreviousRunsHeightsContinuesItBitForBit) {
+  write("a.txt", "0 3 -0.3\n10 3 -0.3\n");
+  write("b.txt", "0 4.2 -0.5\n10 4.2 -0.5\n");
+  write("ab.txt", "0 3 -0.3\n10 3 -0.3\n\n0 4.2 -0.5\n10 4.2 -0.5\n");
+  const std::string rest = R"(, "grid": {"spacing": 0.1}, "tool": {"type": "ball", "radius": 1},
+    "path": {"file": ")";
+  const std::string box = R"({"stock": {"min": [0, 0, -2], "max": [10, 8, 0]})";
+  const test::CliRun a = run("simulate " + write("a.json", box + rest + "a.txt\"}}").string() +
+                             " -o " + path("A") + " --json");
+  ASSERT_EQ(a.status, 0) << a.err;
+  const ZMap both = heightsOf(write("ab.json", box + rest + "ab.txt\"}}"));
+  const ZMap continued =
+      heightsOf(write("b.json", R"({"stock": {"gsf": "A/heights.gsf"})" + rest + "b.txt\"}}"));
+  ASSERT_EQ(continued.nx(), both.nx());
+  ASSERT_EQ(continued.ny(), both.ny());
+  EXPECT_EQ(continued.grid().originX, both.grid().originX);
+  EXPECT_TRUE(continued.heights() == both.heights());
+  EXPECT_LT(both.minHeight(), -0.45);  // both passes cut
+
+  // A grid the map does not cover, and a missing map: errors naming stock.gsf.
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"("gsf": "A/heights.gsf", "min": [-1, 0, 0], "max": [10, 8, 0])", "does not cover"},
+      {R"("gsf": "none/heights.gsf")", "no such file"},
+  };
+  for (const auto& [stock, reason] : cases) {
+    SCOPED_TRACE(stock);
+    write("bad.json", R"({"stock": {)" + stock + "}" + rest + "b.txt\"}}");
+    const std::string error = errorOf(dir_ / "bad.json");
+    EXPECT_NE(error.find("stock.gsf"), std::string::npos) << error;
+    EXPECT_NE(error.find(reason), std::string::npos) << error;
+    const test::CliRun r = run("simulate " + path("bad.json") + " -o " + path("out"));
+    EXPECT_EQ(r.status, 1);
     EXPECT_FALSE(fs::exists(dir_ / "out"));
   }
 }
