@@ -100,13 +100,9 @@ const char* defaultJobJson();
 Job parseJob(const std::string& text, const std::string& source,
              const std::string& pathOverride = "");
 
-// Rethrows `e`, an error met while reading the job from `source`, with `source`
-// leading its place (unless it already does): "job.json: grid.spacing: ...".
-[[noreturn]]  // The closed solid of a job's "stock": {"stl": path}; InputError naming stock.stl
-              // when
-              // the file cannot be read or is not a closed, consistently oriented solid.
-std::shared_ptr<const StockSolid>
-readStockSolid(const std::string& path);
+// The closed solid of a job's "stock": {"stl": path}; InputError naming stock.stl when
+// the file cannot be read or is not a closed, consistently oriented solid.
+std::shared_ptr<const StockSolid> readStockSolid(const std::string& path);
 
 // The height map of a job's "stock": {"gsf": path}; InputError naming stock.gsf.
 std::shared_ptr<const ZMap> readStockMap(const std::string& path);
@@ -115,7 +111,9 @@ std::shared_ptr<const ZMap> readStockMap(const std::string& path);
 // highest.
 Box3 stockMapBox(const ZMap& map, const nlohmann::json& stock);
 
-void throwFromJob(const InputError& e, const std::string& source);
+// Rethrows `e`, an error met while reading the job from `source`, with `source`
+// leading its place (unless it already does): "job.json: grid.spacing: ...".
+[[noreturn]] void throwFromJob(const InputError& e, const std::string& source);
 
 // Refuses a path with a tip beyond +-1e6 mm (1 km) in x, y or z, as the job's own
 // numbers are bounded: the geometry's squares and tile counts stay far from
