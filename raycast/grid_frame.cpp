@@ -143,4 +143,14 @@ FrameCellCounts finishFrameMap(ZMap& map, const GridFrame& frame) {
   return counts;
 }
 
+FrameCellCounts finishStockMap(ZMap& map) {
+  FrameCellCounts counts;
+  for (double& h : map.heights())
+    if (h == kNoMaterial) {
+      h = NAN;
+      ++counts.voidCells;
+    }
+  return counts;
+}
+
 }  // namespace scallop

@@ -80,4 +80,8 @@ struct FrameCellCounts {
 // -depth; returns how many of each.
 FrameCellCounts finishFrameMap(ZMap& map, const GridFrame& frame);
 
+// After the cast of a map without a frame on a stock of any shape: cells without material
+// become NaN (counted as voidCells).
+FrameCellCounts finishStockMap(ZMap& map);
+
 }  // namespace scallop

@@ -181,9 +181,11 @@ SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3
   SimulationResult result;
   result.map = ZMap(grid, stock.max.z);
   if (options.frame) fillFrameStock(result.map, stock, *options.frame);
+  if (options.fillStock) options.fillStock(result.map);
   phaseDone();
   result.cast = castZMap(*scene, result.map, options.cast);
   if (options.frame) result.frameCells = finishFrameMap(result.map, *options.frame);
+  if (options.fillStock) result.frameCells = finishStockMap(result.map);
   result.scene = scene->stats();
   return result;
 }

@@ -1,6 +1,7 @@
 // simulate(): tool path -> swept segments -> scene -> z-map, the whole exact pipeline.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -22,6 +23,9 @@ struct SimulationOptions {
   // A map along any direction (raycast/grid_frame.h): the path is given in the frame's
   // coordinates, the stock (a box of the part) starts each cell at its exit height.
   std::optional<GridFrame> frame;
+  // A stock of any shape (analysis/stock_solid.h), without a frame: sets every cell's
+  // initial height, kNoMaterial where its line holds no material (NaN once cast).
+  std::function<void(ZMap&)> fillStock;
 };
 
 struct SimulationResult {

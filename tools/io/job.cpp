@@ -1,5 +1,7 @@
 #include "tools/io/job.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,9 +14,13 @@
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "raycast/stock_map.h"
+#include "tools/io/file_names.h"
 #include "tools/io/gcode_block.h"
+#include "tools/io/height_export.h"
 #include "tools/io/job_cutters.h"
 #include "tools/io/job_fields.h"
+#include "tools/io/stl_io.h"
 #include "tools/io/tool_path_file.h"
 
 namespace scallop {
@@ -190,6 +196,11 @@ GridSpec Job::grid() const {
   return gridCovering(stock.min.x, stock.min.y, stock.max.x, stock.max.y, spacing);
 }
 
+void Job::fillStockHeights(ZMap& map) const {
+  if (stockSolid) stockSolid->fillHeights(map);
+  if (stockMap) fillFromHeightMap(map, *stockMap);
+}
+
 double Job::stockTop() const {
   return frame ? stockTopInFrame(stock, *frame) : stock.max.z;
 }
@@ -275,12 +286,24 @@ Job parseJob(const std::string& textIn, const std::string& source,
     };
 
     const json& stock = requireObject(doc, "stock", "stock");
-    rejectUnknownKeys(stock, {"min", "max"}, "stock");
-    job.stock.extend(point(stock, "min", "stock.min"));
-    const Vec3 mx = point(stock, "max", "stock.max");
-    if (!(mx.x > job.stock.min.x && mx.y > job.stock.min.y && mx.z > job.stock.min.z))
-      throw InputError("stock.max", "must be greater than stock.min in x, y and z");
-    job.stock.extend(mx);
+    if (stock.contains("stl")) {
+      rejectUnknownKeys(stock, {"stl"}, "stock");
+      job.stockStlFile = besideJob(text(stock, "stl", "stock.stl"));
+      job.stockSolid = readStockSolid(job.stockStlFile);
+      job.stock = job.stockSolid->bounds();
+    } else if (stock.contains("gsf")) {
+      rejectUnknownKeys(stock, {"gsf", "min", "max"}, "stock");
+      job.stockGsfFile = besideJob(text(stock, "gsf", "stock.gsf"));
+      job.stockMap = readStockMap(job.stockGsfFile);
+      job.stock = stockMapBox(*job.stockMap, stock);
+    } else {
+      rejectUnknownKeys(stock, {"min", "max"}, "stock");
+      job.stock.extend(point(stock, "min", "stock.min"));
+      const Vec3 mx = point(stock, "max", "stock.max");
+      if (!(mx.x > job.stock.min.x && mx.y > job.stock.min.y && mx.z > job.stock.min.z))
+        throw InputError("stock.max", "must be greater than stock.min in x, y and z");
+      job.stock.extend(mx);
+    }
 
     const json& grid = requireObject(doc, "grid", "grid");
     rejectUnknownKeys(grid, {"spacing", "frame"}, "grid");
@@ -331,6 +354,53 @@ Job parseJob(const std::string& textIn, const std::string& source,
   }
 }
 
+std::shared_ptr<const ZMap> readStockMap(const std::string& path) {
+  if (lowerExtension(path) != ".gsf")
+    throw InputError("stock.gsf", path + ": expected a .gsf height map (a previous run's)");
+  try {
+    return std::make_shared<const ZMap>(readHeightFile(path));
+  } catch (const InputError& e) {
+    throw InputError("stock.gsf", e.what());
+  }
+}
+
+Box3 stockMapBox(const ZMap& map, const nlohmann::json& stock) {
+  const GridSpec& g = map.grid();
+  Box3 box;
+  double low = HUGE_VAL, high = -HUGE_VAL;
+  for (double h : map.heights())
+    if (!std::isnan(h)) low = std::min(low, h), high = std::max(high, h);
+  if (!(low <= high)) throw InputError("stock.gsf", "holds no material (every cell is void)");
+  const double x1 = g.originX + double(g.nx) * g.spacing, y1 = g.originY + double(g.ny) * g.spacing;
+  if (!stock.contains("min") && !stock.contains("max")) {
+    box.extend({g.originX, g.originY, low});
+    box.extend({x1, y1, high});
+    return box;
+  }
+  const Vec3 mn = point(stock, "min", "stock.min"), mx = point(stock, "max", "stock.max");
+  if (!(mx.x > mn.x && mx.y > mn.y))
+    throw InputError("stock.max", "must be greater than stock.min in x and y");
+  if (mn.x < g.originX || mn.y < g.originY || mx.x > x1 || mx.y > y1)
+    throw InputError("stock.gsf",
+                     fmt::format("its grid [{:g}, {:g}] x [{:g}, {:g}] mm does not cover the "
+                                 "job's grid [{:g}, {:g}] x [{:g}, {:g}] mm (stock.min, stock.max)",
+                                 g.originX, x1, g.originY, y1, mn.x, mx.x, mn.y, mx.y));
+  box.extend({mn.x, mn.y, low});
+  box.extend({mx.x, mx.y, high});
+  return box;
+}
+
+std::shared_ptr<const StockSolid> readStockSolid(const std::string& path) {
+  TriangleMesh mesh;
+  try {
+    mesh = readStl(path);
+  } catch (const InputError& e) {
+    throw InputError("stock.stl", e.what());
+  }
+  checkClosedSolid(mesh, "stock.stl (" + path + ")");
+  return std::make_shared<const StockSolid>(std::move(mesh));
+}
+
 void throwFromJob(const InputError& e, const std::string& source) {
   // Lead every field error with the file it came from.
   if (e.where().rfind(source, 0) == 0) throw e;
@@ -342,6 +412,8 @@ json jobToJson(const Job& job) {
                {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
                 {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}}},
               {"grid", {{"spacing", job.spacing}}}};
+  if (job.stockSolid) out["stock"]["stl"] = job.stockStlFile;
+  if (job.stockMap) out["stock"]["gsf"] = job.stockGsfFile;
   if (job.frame) {
     const GridFrame& f = *job.frame;
     auto vec = [](const Vec3& p) { return json{p.x, p.y, p.z}; };

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/stock_solid.h"
 #include "analysis/triangle_mesh.h"
 #include "base/vec3.h"
 #include "raycast/grid_frame.h"
@@ -44,8 +45,18 @@ struct Job {
   bool arcChords = false;
   // "machine": a 5-axis machine for G-code rotary words (CONVENTIONS.md "Machines").
   std::optional<MachineSpec> machine;
+  // "stock": a box {"min", "max"}, {"gsf": FILE} or {"stl": FILE} a closed solid (CONVENTIONS.md
+  // "Stock"): then `stock` is the solid's bounding box (the grid's extent) and the
+  // heights start from `stockSolid`.
   Box3 stock;
-  double spacing = 0;  // grid cell side, mm
+  std::string stockStlFile;                      // resolved; empty for a box
+  std::shared_ptr<const StockSolid> stockSolid;  // read while parsing
+  // "stock": {"gsf": FILE}: the material under a previous run's heights (void cells
+  // none); `stock` is then its grid's rectangle (or the job's "min", "max" within it)
+  // from its lowest to its highest height.
+  std::string stockGsfFile;              // resolved; empty otherwise
+  std::shared_ptr<const ZMap> stockMap;  // read while parsing
+  double spacing = 0;                    // grid cell side, mm
   // "grid": {"frame": {...}}: a map along any direction (CONVENTIONS.md "Frames"). Once
   // loaded (tools/run/job_loader.h), `path` is in the frame's coordinates.
   std::optional<GridFrame> frame;
@@ -74,6 +85,10 @@ struct Job {
   // The stock's highest point on the map's lines: stock.max.z, or in a frame the box's
   // highest w (mm).
   double stockTop() const;
+  // A stock of any shape (stock.stl or stock.gsf), not a box: the map's cells start at
+  // fillStockHeights (kNoMaterial where a line holds none; raycast/grid_frame.h).
+  bool shapedStock() const { return stockSolid || stockMap; }
+  void fillStockHeights(ZMap& map) const;
   // How the path file is read: block delete, work offsets, tools, machine, and for the
   // teeth model the one tool's flute count (G-code feeds per tooth).
   PathFileOptions pathOptions() const;
@@ -89,6 +104,17 @@ const char* defaultJobJson();
 // "tool" may be left out when the path file defines the cutter (APT CUTTER/).
 Job parseJob(const std::string& text, const std::string& source,
              const std::string& pathOverride = "");
+
+// The closed solid of a job's "stock": {"stl": path}; InputError naming stock.stl when
+// the file cannot be read or is not a closed, consistently oriented solid.
+std::shared_ptr<const StockSolid> readStockSolid(const std::string& path);
+
+// The height map of a job's "stock": {"gsf": path}; InputError naming stock.gsf.
+std::shared_ptr<const ZMap> readStockMap(const std::string& path);
+// The box of a map stock: its grid's rectangle, or the job's "min", "max" (x, y) that
+// it must cover (InputError naming stock.gsf otherwise), from its lowest height to its
+// highest.
+Box3 stockMapBox(const ZMap& map, const nlohmann::json& stock);
 
 // Rethrows `e`, an error met while reading the job from `source`, with `source`
 // leading its place (unless it already does): "job.json: grid.spacing: ...".

@@ -179,7 +179,7 @@ double segmentToBoxXY(const Vec3& a, const Vec3& b, const Vec3& lo, const Vec3& 
 }  // namespace
 
 void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3& stock,
-                         const std::string& source) {
+                         const std::string& source, const StockSolid* solid) {
   const Vec3 down{0, 0, -1};
   for (size_t k = 0; k < file.path.moves.size(); ++k) {
     const Move& mv = file.path.moves[k];
@@ -211,11 +211,13 @@ void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3
     const double reach =
         cutter.radius + cutter.fluteLength * std::max(lean(mv.from.axis), lean(mv.to.axis));
     if (segmentToBoxXY(a, b, stock.min, stock.max) >= reach) continue;
+    double solidTop = top;
+    if (solid && !solid->reachesAbove(a, b, reach, std::min(z0, z1), &solidTop)) continue;
     file.warnings.add(
         source + ":" + std::to_string(file.moveLines[k]),
         fmt::format("rapid move cuts the stock (cutter's lowest point at z = {:g} mm, below the "
                     "stock top z = {:g} mm, over the stock): a crash on the machine",
-                    std::min(z0, z1), top));
+                    std::min(z0, z1), solidTop));
   }
 }
 

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/stock_solid.h"
 #include "base/vec3.h"
 #include "sweep/cutter.h"
 #include "sweep/pose.h"
@@ -121,9 +122,13 @@ ToolPath parseToolPath(const std::string& text, const std::string& source);
 // reach (R, plus flute length x sin(tilt) for a tilted axis) of the box. Retracts
 // straight up the tool axis are not flagged (they leave by the way the cutter is).
 // A multi-tool file's rapids are checked with the tool in the spindle
-// (path.cutters[move.tool]), others with `cutter`.
+// (path.cutters[move.tool]), others with `cutter`. With `solid` (a stock of any shape,
+// `stock` its bounding box), a rapid the box test flags is judged against the solid
+// itself: flagged only when a point of the solid higher than the cutter's lowest point
+// (the lowest over the part of the move below the box top) lies within the horizontal
+// reach of the tip's path there (StockSolid::reachesAbove, exact, not sampled).
 void warnRapidsIntoStock(ToolPathFile& file, const Cutter& cutter, const Box3& stock,
-                         const std::string& source);
+                         const std::string& source, const StockSolid* solid = nullptr);
 
 // A tool axis read from a file: a vector already unit to round-off (as CAM systems
 // print them, 17 digits round-trip) is kept bit for bit, so the sweep's own

@@ -56,7 +56,7 @@ void readPathFile(Job& job) {
                       "its CUTTER/ differs from the job's \"tool\"; the job's "
                       "tool is used");
   checkPathMagnitudes(read.path, read.moveLines, job.pathFile);
-  warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile);
+  warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile, job.stockSolid.get());
   job.path = std::move(read.path);
   job.moveLines = std::move(read.moveLines);
   job.pathWarnings = std::move(read.warnings);
@@ -103,6 +103,10 @@ void checkTeethInputs(const Job& job) {
 // normal side (k >= 0 in the frame), as k >= 0 is required without a frame.
 void placePathInFrame(Job& job) {
   const GridFrame& frame = *job.frame;
+  if (job.shapedStock())
+    throw InputError("grid.frame",
+                     "a stock of any shape (stock.stl, stock.gsf) is not supported in a frame; "
+                     "give the stock as a box or leave out grid.frame");
   if (!job.path.rotary.empty())
     throw InputError("grid.frame",
                      "a 5-axis machine's rotary moves (\"machine\") are not supported in a frame; "

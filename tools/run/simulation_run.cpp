@@ -45,6 +45,11 @@ InMemoryHeights computeHeights(const Job& job, const SimulationPlan& plan,
   options.cast.progress = settings.progress;
   options.cutting = job.cutting;
   options.frame = job.frame;
+  if (job.shapedStock()) {
+    if (settings.method == "stamp")
+      throw InputError("stock", "the stamp method starts from a box; use a box stock");
+    options.fillStock = [&job](ZMap& map) { job.fillStockHeights(map); };
+  }
   if (settings.method == "stamp") {
     // The classical z-map baseline (raycast/stamp_caster.h), reported in the same slots.
     StampOptions stamp;
@@ -85,7 +90,7 @@ RunRecord inMemoryRecord(const Job& job, const SimulationPlan& plan, const RunSe
   run.exactEvaluations = double(sim.cast.exactEvaluations);
   // The raster's floor and scallops are measured vertically in the part frame.
   if (job.isRaster && !job.frame) run.raster = rasterMeasurements(job, sim.map);
-  if (job.frame) run.frameCells = frameCellsJson(sim.frameCells);
+  if (job.frame || job.shapedStock()) run.frameCells = frameCellsJson(sim.frameCells);
   run.surfaceStats = mapSurfaceStatsJson(sim.map);
   run.pathFile = h.pathFile;
   run.feedMarks = feedMarksReport(job, sim.map);

@@ -171,9 +171,11 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
       bandScene = scene->stats();
     }
     if (job.frame) fillFrameStock(band, job.stock, *job.frame);
+    if (job.shapedStock()) job.fillStockHeights(band);
     const CastStats cast = castZMap(*scene, band, options.cast);
     FrameCellCounts frameCells;
     if (job.frame) frameCells = finishFrameMap(band, *job.frame);
+    if (job.shapedStock()) frameCells = finishStockMap(band);
     doneCells += band.grid().cells();
     json stats = {{"rows", {layout.firstRow(b), layout.endRow(b, grid)}},
                   {"cells", cast.cells},
@@ -188,7 +190,7 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
                         {"culling_tiles", bandScene.tiles},
                         {"bytes", bandScene.bytes()}};
     if (job.isRaster && !job.frame) stats["raster"] = rasterMeasurements(job, band);
-    if (job.frame) stats["frame"] = frameCellsJson(frameCells);
+    if (job.frame || job.shapedStock()) stats["frame"] = frameCellsJson(frameCells);
     if (output) {
       output->add(band, stats);
     } else {
