@@ -69,6 +69,60 @@ bool clipToBox(Xy& a, Xy& b, double x0, double y0, double x1, double y1) {
   return t1 > t0;
 }
 
+double moveRadius(const Job& job, const Move& m) {
+  return m.tool < job.path.cutters.size() ? job.path.cutters[m.tool].radius : job.cutter.radius;
+}
+
+// Whether a move cuts along a straight xy segment of some length.
+bool straightCut(const Move& m) {
+  const double dx = m.to.tip.x - m.from.tip.x, dy = m.to.tip.y - m.from.tip.y;
+  return !m.rapid && m.arc <= 0 && dx * dx + dy * dy > 0;
+}
+
+// The line of the straight run of moves first..last (0-based), named by `what`, less
+// one cutter radius at both ends, clipped to the cell centres; or the reason there is
+// none.
+json runLine(const Job& job, const GridSpec& g, size_t first, size_t last, size_t named,
+             const std::string& what) {
+  const std::vector<Move>& moves = job.path.moves;
+  const double radius = moveRadius(job, moves[named]);
+  Xy a{moves[first].from.tip.x, moves[first].from.tip.y};
+  Xy b{moves[last].to.tip.x, moves[last].to.tip.y};
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  json line = {{"move", named + 1}};
+  if (named < job.moveLines.size()) line["file_line"] = job.moveLines[named];
+  const json passMoves = {first + 1, last + 1};
+  if (!(length > 2 * radius))
+    return {{"pass_moves", passMoves}, {"reason", what + " is not longer than two cutter radii"}};
+  const Xy u{(b.x - a.x) / length, (b.y - a.y) / length};
+  a = {a.x + radius * u.x, a.y + radius * u.y};
+  b = {b.x - radius * u.x, b.y - radius * u.y};
+  if (g.nx < 2 || g.ny < 2 ||
+      !clipToBox(a, b, g.cellCentreX(0), g.cellCentreY(0), g.cellCentreX(g.nx - 1),
+                 g.cellCentreY(g.ny - 1)))
+    return {{"pass_moves", passMoves},
+            {"reason", what + ", less a cutter radius at each end, does not cross the map"}};
+  const int64_t samples =
+      int64_t(std::floor(std::hypot(b.x - a.x, b.y - a.y) / g.spacing + 1e-9)) + 1;
+  if (samples < 3)
+    return {{"pass_moves", passMoves}, {"reason", what + " crosses fewer than 3 cells of the map"}};
+  line["from"] = {a.x, a.y};
+  line["to"] = {b.x, b.y};
+  line["step_mm"] = g.spacing;
+  line["samples"] = samples;
+  line["pass_moves"] = passMoves;
+  line["sampling"] = kSampling;
+  return {{"line", line}};
+}
+
+// The first and last move of the straight run holding move k.
+std::pair<size_t, size_t> runAround(const std::vector<Move>& moves, size_t k) {
+  size_t first = k, last = k;
+  while (first > 0 && continues(moves[first - 1], moves[first])) --first;
+  while (last + 1 < moves.size() && continues(moves[last], moves[last + 1])) ++last;
+  return {first, last};
+}
+
 // The centre line (feed_mark_report.h), or the reason there is none.
 json centreLine(const Job& job, const GridSpec& g) {
   const std::vector<Move>& moves = job.path.moves;
@@ -78,48 +132,42 @@ json centreLine(const Job& job, const GridSpec& g) {
   double bestDistance = HUGE_VAL;
   for (size_t k = 0; k < moves.size(); ++k) {
     const Move& m = moves[k];
+    if (!straightCut(m)) continue;
     const double dx = m.to.tip.x - m.from.tip.x, dy = m.to.tip.y - m.from.tip.y;
     const double len2 = dx * dx + dy * dy;
-    if (m.rapid || m.arc > 0 || !(len2 > 0)) continue;
     const double t =
         std::clamp(((cx - m.from.tip.x) * dx + (cy - m.from.tip.y) * dy) / len2, 0.0, 1.0);
     const double d = std::hypot(m.from.tip.x + t * dx - cx, m.from.tip.y + t * dy - cy);
     if (d < bestDistance) bestDistance = d, best = k;
   }
   if (best == moves.size()) return {{"reason", "no cutting move moves in x or y"}};
-  size_t first = best, last = best;
-  while (first > 0 && continues(moves[first - 1], moves[first])) --first;
-  while (last + 1 < moves.size() && continues(moves[last], moves[last + 1])) ++last;
-  const Move& m = moves[best];
-  const double radius =
-      m.tool < job.path.cutters.size() ? job.path.cutters[m.tool].radius : job.cutter.radius;
-  Xy a{moves[first].from.tip.x, moves[first].from.tip.y};
-  Xy b{moves[last].to.tip.x, moves[last].to.tip.y};
-  const double length = std::hypot(b.x - a.x, b.y - a.y);
-  json line = {{"move", best + 1}};
-  if (best < job.moveLines.size()) line["file_line"] = job.moveLines[best];
-  if (!(length > 2 * radius))
-    return {{"reason", "the pass nearest the map centre (move " + std::to_string(best + 1) +
-                           ") is not longer than two cutter radii"}};
-  const Xy u{(b.x - a.x) / length, (b.y - a.y) / length};
-  a = {a.x + radius * u.x, a.y + radius * u.y};
-  b = {b.x - radius * u.x, b.y - radius * u.y};
-  if (g.nx < 2 || g.ny < 2 ||
-      !clipToBox(a, b, g.cellCentreX(0), g.cellCentreY(0), g.cellCentreX(g.nx - 1),
-                 g.cellCentreY(g.ny - 1)))
-    return {{"reason", "the pass nearest the map centre (move " + std::to_string(best + 1) +
-                           "), less a cutter radius at each end, does not cross the map"}};
-  const int64_t samples =
-      int64_t(std::floor(std::hypot(b.x - a.x, b.y - a.y) / g.spacing + 1e-9)) + 1;
-  if (samples < 3)
-    return {{"reason", "the pass nearest the map centre crosses fewer than 3 cells of it"}};
-  line["from"] = {a.x, a.y};
-  line["to"] = {b.x, b.y};
-  line["step_mm"] = g.spacing;
-  line["samples"] = samples;
-  line["pass_moves"] = {first + 1, last + 1};
-  line["sampling"] = kSampling;
-  return {{"line", line}};
+  const auto [first, last] = runAround(moves, best);
+  json line = runLine(job, g, first, last, best,
+                      "the pass nearest the map centre (move " + std::to_string(best + 1) + ")");
+  return line;
+}
+
+// Every straight cutting run of the path (feed_mark_report.h "passes"), the first
+// kMaxPasses of them listed.
+constexpr size_t kMaxPasses = 64;
+void addPasses(const Job& job, const GridSpec& g, json& plan) {
+  const std::vector<Move>& moves = job.path.moves;
+  json passes = json::array();
+  size_t runs = 0, crossing = 0;
+  for (size_t k = 0; k < moves.size(); ++k) {
+    if (!straightCut(moves[k])) continue;
+    const auto [first, last] = runAround(moves, k);
+    k = last;
+    ++runs;
+    json pass =
+        runLine(job, g, first, last, first,
+                "the pass of moves " + std::to_string(first + 1) + ".." + std::to_string(last + 1));
+    if (pass.contains("line")) ++crossing;
+    if (passes.size() < kMaxPasses) passes.push_back(pass);
+  }
+  plan["passes"] = passes;
+  plan["pass_count"] = runs;
+  plan["passes_crossing_the_map"] = crossing;
 }
 
 // The closed form for a raster (analysis/feed_mark_formula.h).
@@ -151,25 +199,25 @@ void addPrediction(const Job& job, json& plan) {
 json feedMarkPlan(const Job& job, const GridSpec& grid) {
   if (!job.cutting.teeth()) return nullptr;
   json plan = centreLine(job, grid);
+  addPasses(job, grid, plan);
   addPrediction(job, plan);
   return plan;
 }
 
-FeedMarkSampler::FeedMarkSampler(const json& plan, const GridSpec& grid)
-    : plan_(plan), grid_(grid) {
-  if (!plan_.contains("line")) return;
-  const json& line = plan_["line"];
+// The samples of a plan's line: as extractProfile places a sample in the cell-centre
+// lattice (clamped onto it: the line was clipped to the centres' span, up to rounding).
+void FeedMarkSampler::addLine(const json& line) {
   Profile p;
   p.x0 = line["from"][0].get<double>(), p.y0 = line["from"][1].get<double>();
   p.x1 = line["to"][0].get<double>(), p.y1 = line["to"][1].get<double>();
-  p.stepMm = stepMm_ = line["step_mm"].get<double>();
+  p.stepMm = line["step_mm"].get<double>();
   const int64_t n = line["samples"].get<int64_t>();
   const GridSpec& g = grid_;
-  // As extractProfile places a sample in the cell-centre lattice (clamped onto it: the
-  // line was clipped to the centres' span, up to rounding).
   auto index = [](double v, double origin, double spacing, int64_t cells) {
     return std::clamp((v - origin) / spacing - 0.5, 0.0, double(cells - 1));
   };
+  Line l;
+  l.stepMm = p.stepMm;
   for (int64_t k = 0; k < n; ++k) {
     const double fi = index(p.xAt(k), g.originX, g.spacing, g.nx);
     const double fj = index(p.yAt(k), g.originY, g.spacing, g.ny);
@@ -178,37 +226,55 @@ FeedMarkSampler::FeedMarkSampler(const json& plan, const GridSpec& grid)
     s.j0 = std::min<int64_t>(int64_t(fj), std::max<int64_t>(0, g.ny - 2));
     s.i1 = std::min(s.i0 + 1, g.nx - 1), s.j1 = std::min(s.j0 + 1, g.ny - 1);
     s.u = fi - double(s.i0), s.v = fj - double(s.j0);
-    samples_.push_back(s);
+    l.samples.push_back(s);
   }
-  cells_.assign(4 * samples_.size(), std::numeric_limits<double>::quiet_NaN());
+  l.cells.assign(4 * l.samples.size(), std::numeric_limits<double>::quiet_NaN());
+  lines_.push_back(std::move(l));
+}
+
+FeedMarkSampler::FeedMarkSampler(const json& plan, const GridSpec& grid)
+    : plan_(plan), grid_(grid) {
+  if (plan_.contains("line")) addLine(plan_["line"]);
+  if (plan_.contains("passes"))
+    for (const json& pass : plan_["passes"])
+      if (pass.contains("line")) addLine(pass["line"]);
 }
 
 void FeedMarkSampler::add(const ZMap& map) {
   const int64_t j0 = map.grid().offsetJ, j1 = j0 + map.ny();
-  for (size_t k = 0; k < samples_.size(); ++k) {
-    const Sample& s = samples_[k];
-    const int64_t is[4] = {s.i0, s.i1, s.i0, s.i1}, js[4] = {s.j0, s.j0, s.j1, s.j1};
-    for (int c = 0; c < 4; ++c)
-      if (js[c] >= j0 && js[c] < j1) cells_[4 * k + size_t(c)] = map.at(is[c], js[c] - j0);
-  }
+  for (Line& l : lines_)
+    for (size_t k = 0; k < l.samples.size(); ++k) {
+      const Sample& s = l.samples[k];
+      const int64_t is[4] = {s.i0, s.i1, s.i0, s.i1}, js[4] = {s.j0, s.j0, s.j1, s.j1};
+      for (int c = 0; c < 4; ++c)
+        if (js[c] >= j0 && js[c] < j1) l.cells[4 * k + size_t(c)] = map.at(is[c], js[c] - j0);
+    }
 }
 
-json FeedMarkSampler::report() const {
-  json r = plan_;
-  if (!plan_.contains("line")) return r;
+// Adds the measurement of line l to `out`.
+void FeedMarkSampler::measure(const Line& l, json& out) {
   Profile p;
-  p.stepMm = stepMm_;
-  for (size_t k = 0; k < samples_.size(); ++k) {
-    const Sample& s = samples_[k];
-    const double* c = &cells_[4 * k];
+  p.stepMm = l.stepMm;
+  for (size_t k = 0; k < l.samples.size(); ++k) {
+    const Sample& s = l.samples[k];
+    const double* c = &l.cells[4 * k];
     p.height.push_back((1 - s.u) * (1 - s.v) * c[0] + s.u * (1 - s.v) * c[1] +
                        (1 - s.u) * s.v * c[2] + s.u * s.v * c[3]);
   }
   const FeedMarks m = measureFeedMarks(p);
-  r["peak_to_valley_um"] = m.peakToValleyMm * 1e3;
-  r["valleys"] = m.valleysMm.size();
-  r["mean_spacing_mm"] = m.valleysMm.size() >= 2 ? json(m.meanSpacingMm) : json(nullptr);
-  r["spacing_method"] = spacingMethod();
+  out["peak_to_valley_um"] = m.peakToValleyMm * 1e3;
+  out["valleys"] = m.valleysMm.size();
+  out["mean_spacing_mm"] = m.valleysMm.size() >= 2 ? json(m.meanSpacingMm) : json(nullptr);
+}
+
+json FeedMarkSampler::report() const {
+  json r = plan_;
+  size_t next = 0;
+  if (r.contains("line")) measure(lines_[next++], r);
+  if (r.contains("passes"))
+    for (json& pass : r["passes"])
+      if (pass.contains("line")) measure(lines_[next++], pass);
+  if (next > 0) r["spacing_method"] = spacingMethod();
   return r;
 }
 

@@ -11,7 +11,14 @@
 // is the bilinear interpolation of the four surrounding cell centres, as
 // `scallop export --profile` samples (analysis/profile_metrology.h).
 //
-// The plan (the line, the prediction) depends only on the job and the grid, so a run
+// "passes": every straight cutting run of the path (the moves that continue one another
+// as above; arcs and rapids end a run), the first 64 listed, each with its moves and its
+// line (as above, the same trimming and clipping) and the same measurement, or the
+// reason it has none (shorter than two cutter radii, does not cross the map): a pass
+// that misses the map is reported as such, not refused. "pass_count" and
+// "passes_crossing_the_map" count them all.
+//
+// The plan (the line, the passes, the prediction) depends only on the job and the grid, so a run
 // in bands carries it in its description and every band gives the cells it holds.
 #pragma once
 
@@ -45,9 +52,14 @@ class FeedMarkSampler {
     int64_t i0, j0, i1, j1;
     double u, v;
   };
-  std::vector<Sample> samples_;
-  std::vector<double> cells_;  // 4 per sample: (i0,j0) (i1,j0) (i0,j1) (i1,j1)
-  double stepMm_ = 0;
+  struct Line {
+    std::vector<Sample> samples;
+    std::vector<double> cells;  // 4 per sample: (i0,j0) (i1,j0) (i0,j1) (i1,j1)
+    double stepMm = 0;
+  };
+  void addLine(const nlohmann::json& line);
+  static void measure(const Line& line, nlohmann::json& out);
+  std::vector<Line> lines_;  // the plan's "line", then each pass's that has one
 };
 
 // The "feed_marks" section of an in-memory run: null for an envelope job.

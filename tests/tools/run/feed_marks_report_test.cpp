@@ -101,6 +101,41 @@ TEST_F(FeedMarksReport, GcodeFeedsPerToothSpaceTheMarks) {
   }
 }
 
+// Every straight pass of a path gets its own line and measurement: two passes 0.2 mm
+// apart (far enough that neither cuts the other's centre line: the ball is 0.2^2 / 6 mm
+// = 6.7 um higher there, above the 0.42 um marks), the second in reverse, and a third
+// that misses the map, which is reported as such.
+TEST_F(FeedMarksReport, EveryPassOfAPathIsMeasured) {
+  const std::string job = R"({"tool": {"type": "ball", "radius": 3},
+      "cutting": {"model": "teeth"}, "machine": {"kinematics": "xyzbc-trt"},
+      "stock": {"min": [0, -0.01, -2], "max": [0.4, 0.21, 0]}, "grid": {"spacing": 0.002},
+      "path": {"file": "p.nc"}})";
+  write("p.nc",
+        "G43.4\nS6000 M3\nG0 X-4 Y0 Z1 B-15 C0\nG1 Z-0.1 F1200\nX5\nG0 Z1\nY0.2\n"
+        "G1 Z-0.1\nX-4\nG0 Z1\nY5\nG1 Z-0.1\nX5\n");
+  const json f = simulate(job).at("feed_marks");
+  const json& passes = f.at("passes");
+  ASSERT_EQ(passes.size(), 3u) << f;
+  EXPECT_EQ(f.at("pass_count"), 3);
+  EXPECT_EQ(f.at("passes_crossing_the_map"), 2);
+  const double fz = 1200.0 / (6000 * 2), h = circularMarkHeight(3, fz);
+  const double slope = 0.5 * fz / std::sqrt(9 - 0.25 * fz * fz);
+  for (int k = 0; k < 2; ++k) {
+    const json& pass = passes[k];
+    ASSERT_TRUE(pass.contains("line")) << pass;
+    EXPECT_NEAR(pass["line"]["from"][1].get<double>(), 0.2 * k, 1e-12);
+    EXPECT_NEAR(pass.at("mean_spacing_mm").get<double>(), fz, 1e-6) << pass;
+    const double pv = pass.at("peak_to_valley_um").get<double>() * 1e-3;
+    EXPECT_LE(pv, h + 2e-9) << pass;
+    EXPECT_GE(pv, h - slope * 0.001 - 2e-9) << pass;
+  }
+  EXPECT_EQ(passes[0]["line"]["pass_moves"], json({2, 2}));  // X5, after the plunge
+  EXPECT_FALSE(passes[2].contains("line"));
+  EXPECT_NE(passes[2].at("reason").get<std::string>().find("does not cross the map"),
+            std::string::npos)
+      << passes[2];
+}
+
 TEST_F(FeedMarksReport, BandsGiveTheWholeMapsSection) {
   const json whole = simulate(kJob).at("feed_marks");
   // 20 rows in bands of 3: the line (between rows 9 and 10) spans two bands.
