@@ -76,8 +76,13 @@ double programCellsPerMove(const Cutter& cutter, const ToolPath& path, const Box
   return cells / double(reaching);
 }
 
-double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3& stock,
-                          double spacing, size_t* moves, const CuttingModel& cutting) {
+namespace {
+
+// What estimateSceneBytes counts for each cutting move that may reach below the stock
+// top: its xy reach and its bytes (the SweptMove and its culling tiles).
+template <class Visit>
+size_t visitMoveSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                           double spacing, const CuttingModel& cutting, Visit visit) {
   // TileBox (152) + Embree's BVH share (measured: 370 on the scene of scene_memory_test)
   // + the most the tile grid takes a tile.
   constexpr double kBytesPerTile = 420 + scene_detail::TileGrid::kMaxBytesPerTile;
@@ -85,7 +90,6 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3
   const double R = cutter.radius + cutter.teeth.runout, flute = cutter.fluteLength;
   SceneOptions tiling;
   tiling.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
-  double need = 0;
   size_t counted = 0;
   for (const Move& m : path.moves) {
     if (!mayCut(path, m, R, flute, stock.max.z)) continue;
@@ -96,20 +100,70 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3
         arc ? PoseCurve::ofMove(path, m).pathLength() : length(m.to.tip - m.from.tip);
     const double T = cullingTileSide(R, len, w * h, tiling);
     const bool turning = arc || PoseCurve::turns(m.from.axis, m.to.axis);
-    need += double(SweptMove::bytesPerMove(turning, cutting.teeth())) +
-            kBytesPerTile * std::fmax(1, std::ceil(w / T)) * std::fmax(1, std::ceil(h / T));
+    visit(r, double(SweptMove::bytesPerMove(turning, cutting.teeth())) +
+                 kBytesPerTile * std::fmax(1, std::ceil(w / T)) * std::fmax(1, std::ceil(h / T)));
     ++counted;
   }
+  return counted;
+}
+
+}  // namespace
+
+double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3& stock,
+                          double spacing, size_t* moves, const CuttingModel& cutting) {
+  double need = 0;
+  const size_t counted =
+      visitMoveSceneBytes(cutter, path, stock, spacing, cutting,
+                          [&](const MoveReach&, double bytes) { need += bytes; });
   if (moves) *moves = counted;
   return need;
 }
 
+std::vector<double> estimateBandSceneBytes(const Cutter& cutter, const ToolPath& path,
+                                           const Box3& stock, const GridSpec& grid,
+                                           int64_t bandRows, const CuttingModel& cutting) {
+  const int64_t bands = (grid.ny + bandRows - 1) / bandRows;
+  // Each move adds its bytes to the bands [first, last] its reach meets: +bytes at first,
+  // -bytes after last, summed once at the end (the cost does not grow with the bands).
+  std::vector<double> delta(size_t(bands) + 1, 0.0);
+  // Image row r holds the cells j = ny - 1 - r, whose lines lie at y = cellCentreY(j).
+  const auto bandOfJ = [&](int64_t j) { return (grid.ny - 1 - j) / bandRows; };
+  visitMoveSceneBytes(cutter, path, stock, grid.spacing, cutting,
+                      [&](const MoveReach& r, double bytes) {
+                        if (r.x1 < grid.cellCentreX(0) || r.x0 > grid.cellCentreX(grid.nx - 1))
+                          return;
+                        // The rows whose centre lines lie in [y0, y1].
+                        const double jLo = std::ceil((r.y0 - grid.cellCentreY(0)) / grid.spacing);
+                        const double jHi = std::floor((r.y1 - grid.cellCentreY(0)) / grid.spacing);
+                        // One row of margin each side for the rounding of the divisions.
+                        const int64_t j0 = int64_t(std::fmax(0.0, jLo - 1));
+                        const int64_t j1 = int64_t(std::fmin(double(grid.ny - 1), jHi + 1));
+                        if (j0 > j1) return;
+                        delta[size_t(bandOfJ(j1))] += bytes;
+                        delta[size_t(bandOfJ(j0)) + 1] -= bytes;
+                      });
+  std::vector<double> need(size_t(bands), 0.0);
+  double running = 0;
+  for (size_t b = 0; b < need.size(); ++b) need[b] = running += delta[b];
+  return need;
+}
+
+SweepWindow cellWindow(const GridSpec& grid) {
+  SweepWindow w;
+  w.x0 = grid.cellCentreX(0), w.x1 = grid.cellCentreX(grid.nx - 1);
+  w.y0 = grid.cellCentreY(0), w.y1 = grid.cellCentreY(grid.ny - 1);
+  return w;
+}
+
 std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
                                        const Box3& stock, double spacing,
-                                       const SimulationOptions& options) {
+                                       const SimulationOptions& options,
+                                       const SweepWindow* window) {
   SceneOptions sceneOptions = sceneOptionsFor(stock, spacing, options);
+  // The whole program's cells a move, also for a window's scene: the same culling tiles.
   sceneOptions.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
-  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.cutting), sceneOptions);
+  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.cutting, window),
+                                      sceneOptions);
 }
 
 SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,

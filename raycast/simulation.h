@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "raycast/grid_frame.h"
 #include "raycast/swept_scene.h"
@@ -54,11 +55,25 @@ double estimateSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3
                           double spacing, size_t* moves = nullptr,
                           const CuttingModel& cutting = {});
 
+// estimateSceneBytes of the scene of each band of `bandRows` rows of `grid`, counted
+// from its top row (j = ny - 1: image row 0, as the map's bands are written): the bytes
+// of the moves whose reach meets the band's cell lines (a move near a band's edge counts
+// in each band it meets).
+std::vector<double> estimateBandSceneBytes(const Cutter& cutter, const ToolPath& path,
+                                           const Box3& stock, const GridSpec& grid,
+                                           int64_t bandRows, const CuttingModel& cutting = {});
+
+// The window of `grid`'s cell lines (their centres' extent).
+SweepWindow cellWindow(const GridSpec& grid);
+
 // The culling scene of `path` for a grid of cells of side `spacing` (mm): built once,
-// it serves any number of sub-grids (bands of a map too large to hold).
+// it serves any number of sub-grids (bands of a map too large to hold). With a
+// `window`, the scene of the moves that may reach it only (sweepToolPath): it serves
+// the sub-grids inside the window, with the same heights as the whole scene.
 std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& path,
                                        const Box3& stock, double spacing,
-                                       const SimulationOptions& options = {});
+                                       const SimulationOptions& options = {},
+                                       const SweepWindow* window = nullptr);
 
 // Heights of `stock` (its top is the initial height) after `path`, on `grid`. With
 // options.frame, the frame's heights (cells start at the stock's exit height, those

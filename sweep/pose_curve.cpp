@@ -125,11 +125,13 @@ PoseCurve PoseCurve::rotary(RotaryKinematics kin, const Vec3& tip0, const Vec3& 
   c.kind_ = kin == RotaryKinematics::TableBC ? Kind::TableBC : Kind::TableAC;
   c.tip0_ = tip0;
   c.tip1_ = tip1;
-  c.tilt0_ = tilt0, c.dTilt_ = tilt1 - tilt0;
-  c.spin0_ = spin0, c.dSpin_ = spin1 - spin0;
+  MachineTerms m;
+  m.tilt0 = tilt0, m.dTilt = tilt1 - tilt0;
+  m.spin0 = spin0, m.dSpin = spin1 - spin0;
   c.u_ = machineAxis(kin, tilt0, spin0);
   c.a1_ = machineAxis(kin, tilt1, spin1);
-  c.omega_ = std::fabs(c.dTilt_) + std::fabs(c.dSpin_);
+  c.omega_ = std::fabs(m.dTilt) + std::fabs(m.dSpin);
+  c.machine_ = std::make_shared<const MachineTerms>(m);
   if (c.omega_ <= kNoTurn) c.omega_ = 0, c.a1_ = c.u_;
   return c;
 }
@@ -149,14 +151,16 @@ PoseCurve PoseCurve::jointLinear(const TableMachine& machine, const RotaryMotion
   if (c.omega_ == 0) return c;  // constant angles: the rotation is fixed, the tip linear
   c.kind_ = bc ? Kind::JointBC : Kind::JointAC;
   const Kinematics k = kinematicsOf(machine);
-  c.q0_ = m.joints0 - k.d - machine.pivot;
-  c.dq_ = m.joints1 - m.joints0;
-  c.e_ = k.e;
-  c.c_ = k.c;
+  MachineTerms terms = *c.machine_;
+  terms.q0 = m.joints0 - k.d - machine.pivot;
+  terms.dq = m.joints1 - m.joints0;
+  terms.e = k.e;
+  terms.c = k.c;
+  c.machine_ = std::make_shared<const MachineTerms>(terms);
   // The bounds of pose_curve.h, from the rates before any rounding to zero.
-  const double w = std::fabs(c.dTilt_) + std::fabs(c.dSpin_), wc = std::fabs(c.dSpin_);
-  const double Q = std::fmax(length(c.q0_), length(c.q0_ + c.dq_)), dq = length(c.dq_);
-  const double e = length(c.e_);
+  const double w = std::fabs(terms.dTilt) + std::fabs(terms.dSpin), wc = std::fabs(terms.dSpin);
+  const double Q = std::fmax(length(terms.q0), length(terms.q0 + terms.dq)), dq = length(terms.dq);
+  const double e = length(terms.e);
   c.tipAccel_ = w * w * Q + 2 * w * dq + wc * wc * e;
   c.tipJerk_ = w * w * w * Q + 3 * w * w * dq + wc * wc * wc * e;
   return c;
@@ -165,16 +169,19 @@ PoseCurve PoseCurve::jointLinear(const TableMachine& machine, const RotaryMotion
 PoseCurve PoseCurve::arc(const ArcMotion& arc, const Vec3& axis) {
   PoseCurve c;
   c.kind_ = Kind::Arc;
-  c.arc_ = std::make_shared<const ArcMotion>(arc);
+
   c.tip0_ = arc.at(0);
   c.tip1_ = arc.at(1);
   c.u_ = c.a1_ = c.axisMiddle_ = normalize(axis);
   // The bounds of pose_curve.h at the larger radius, 1e-12 relative for round-off.
   const double s = std::fabs(arc.sweep), d = std::fabs(arc.radius1 - arc.radius0);
   const double rho = std::fmax(arc.radius0, arc.radius1), keep = 1 + 1e-12;
-  c.arcSpeed_ = std::sqrt(d * d + rho * rho * s * s + arc.rise * arc.rise) * keep;
-  c.arcPlaneSpeed_ = std::sqrt(d * d + rho * rho * s * s) * keep;
-  c.arcNormal_ = cross(arc.u, arc.v);
+  ArcTerms terms;
+  terms.motion = arc;
+  terms.speed = std::sqrt(d * d + rho * rho * s * s + arc.rise * arc.rise) * keep;
+  terms.planeSpeed = std::sqrt(d * d + rho * rho * s * s) * keep;
+  terms.normal = cross(arc.u, arc.v);
+  c.arc_ = std::make_shared<const ArcTerms>(terms);
   c.tipAccel_ = std::sqrt(4 * d * d * s * s + rho * rho * s * s * s * s) * keep;
   c.tipJerk_ = std::sqrt(9 * d * d * s * s * s * s + rho * rho * s * s * s * s * s * s) * keep;
   return c;
@@ -191,13 +198,15 @@ PoseCurve PoseCurve::ofMove(const ToolPath& path, const Move& move, const char* 
 
 Vec3 PoseCurve::forward(double t) const {
   const bool bc = kind_ == Kind::JointBC;
-  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
-  return rotZ(tiltRotation(bc, q0_ + dq_ * t, -tilt) + e_, -spin) + c_;
+  const double tilt = machine_->tilt0 + machine_->dTilt * t,
+               spin = machine_->spin0 + machine_->dSpin * t;
+  return rotZ(tiltRotation(bc, machine_->q0 + machine_->dq * t, -tilt) + machine_->e, -spin) +
+         machine_->c;
 }
 
 Vec3 PoseCurve::curvedTipVelocity(double t) const {
   if (kind_ == Kind::Arc) {
-    const ArcMotion& a = *arc_;
+    const ArcMotion& a = arc_->motion;
     const double theta = a.angle0 + a.sweep * t, rho = a.radius0 + (a.radius1 - a.radius0) * t;
     const double c = std::cos(theta), s = std::sin(theta);
     const Vec3 er = a.u * c + a.v * s, et = a.v * c - a.u * s;
@@ -206,27 +215,30 @@ Vec3 PoseCurve::curvedTipVelocity(double t) const {
   // tip = Z(phi) (T(psi) q + e) + c with phi = -C(t), psi = -T(t); a rotation about the
   // unit axis n by angle a has d/da R v = n x R v.
   const bool bc = kind_ == Kind::JointBC;
-  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
-  const Vec3 tq = tiltRotation(bc, q0_ + dq_ * t, -tilt);
+  const double tilt = machine_->tilt0 + machine_->dTilt * t,
+               spin = machine_->spin0 + machine_->dSpin * t;
+  const Vec3 tq = tiltRotation(bc, machine_->q0 + machine_->dq * t, -tilt);
   const Vec3 n = bc ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
-  const Vec3 inner = cross(n, tq) * -dTilt_ + tiltRotation(bc, dq_, -tilt);
-  return cross(Vec3{0, 0, 1}, rotZ(tq + e_, -spin)) * -dSpin_ + rotZ(inner, -spin);
+  const Vec3 inner = cross(n, tq) * -machine_->dTilt + tiltRotation(bc, machine_->dq, -tilt);
+  return cross(Vec3{0, 0, 1}, rotZ(tq + machine_->e, -spin)) * -machine_->dSpin +
+         rotZ(inner, -spin);
 }
 
 double PoseCurve::tipSpeedBound() const {
   if (linearTip()) return length(tip1_ - tip0_);
-  if (kind_ == Kind::Arc) return arcSpeed_;
+  if (kind_ == Kind::Arc) return arc_->speed;
   return std::max(length(tipVelocity(0)), length(tipVelocity(1))) + 0.5 * tipAccel_;
 }
 
 double PoseCurve::arcAcross(const Vec3& N) const {
-  const double along = dot(N, arcNormal_);
+  const double along = dot(N, arc_->normal);
   return std::sqrt(std::max(0.0, dot(N, N) - along * along)) * (1 + 1e-12);
 }
 
 double PoseCurve::tipRateAlong(const Vec3& N) const {
   if (kind_ != Kind::Arc) return linearTip() ? std::fabs(dot(N, tip1_ - tip0_)) : tipSpeedBound();
-  return (std::fabs(dot(N, arcNormal_) * arc_->rise) + arcAcross(N) * arcPlaneSpeed_) * (1 + 1e-12);
+  return (std::fabs(dot(N, arc_->normal) * arc_->motion.rise) + arcAcross(N) * arc_->planeSpeed) *
+         (1 + 1e-12);
 }
 
 double PoseCurve::tipAccelAlong(const Vec3& N) const {
@@ -239,7 +251,7 @@ double PoseCurve::tipJerkAlong(const Vec3& N) const {
 
 double PoseCurve::pathLength() const {
   if (kind_ != Kind::Arc) return length(tip1_ - tip0_);
-  const ArcMotion& a = *arc_;
+  const ArcMotion& a = arc_->motion;
   const double d = a.radius1 - a.radius0;
   auto speed = [&](double t) {
     const double rho = a.radius0 + d * t;
@@ -254,7 +266,7 @@ double PoseCurve::pathLength() const {
 
 Vec3 PoseCurve::curvedTipAcceleration(double t) const {
   if (kind_ == Kind::Arc) {
-    const ArcMotion& a = *arc_;
+    const ArcMotion& a = arc_->motion;
     const double theta = a.angle0 + a.sweep * t, rho = a.radius0 + (a.radius1 - a.radius0) * t;
     const double c = std::cos(theta), s = std::sin(theta);
     const Vec3 er = a.u * c + a.v * s, et = a.v * c - a.u * s;
@@ -263,14 +275,16 @@ Vec3 PoseCurve::curvedTipAcceleration(double t) const {
   // With P = T(psi) q and W = P + e: P' = -dT n x P + T dq, P'' = -dT n x (P' + T dq);
   // tip' = -dC z x (Z W) + Z P', so tip'' = -dC z x (tip' + Z P') + Z P''.
   const bool bc = kind_ == Kind::JointBC;
-  const double tilt = tilt0_ + dTilt_ * t, spin = spin0_ + dSpin_ * t;
+  const double tilt = machine_->tilt0 + machine_->dTilt * t,
+               spin = machine_->spin0 + machine_->dSpin * t;
   const Vec3 n = bc ? Vec3{0, 1, 0} : Vec3{1, 0, 0}, z{0, 0, 1};
-  const Vec3 tq = tiltRotation(bc, q0_ + dq_ * t, -tilt), tdq = tiltRotation(bc, dq_, -tilt);
-  const Vec3 p1 = cross(n, tq) * -dTilt_ + tdq;
-  const Vec3 p2 = cross(n, p1 + tdq) * -dTilt_;
+  const Vec3 tq = tiltRotation(bc, machine_->q0 + machine_->dq * t, -tilt),
+             tdq = tiltRotation(bc, machine_->dq, -tilt);
+  const Vec3 p1 = cross(n, tq) * -machine_->dTilt + tdq;
+  const Vec3 p2 = cross(n, p1 + tdq) * -machine_->dTilt;
   const Vec3 zp1 = rotZ(p1, -spin);
-  const Vec3 v = cross(z, rotZ(tq + e_, -spin)) * -dSpin_ + zp1;
-  return cross(z, v + zp1) * -dSpin_ + rotZ(p2, -spin);
+  const Vec3 v = cross(z, rotZ(tq + machine_->e, -spin)) * -machine_->dSpin + zp1;
+  return cross(z, v + zp1) * -machine_->dSpin + rotZ(p2, -spin);
 }
 
 Vec3 PoseCurve::axis(double t) const {
@@ -284,7 +298,8 @@ Vec3 PoseCurve::axis(double t) const {
     return u_ * ca + v_ * sa;
   }
   const RotaryKinematics kin = tableBC() ? RotaryKinematics::TableBC : RotaryKinematics::TableAC;
-  return machineAxis(kin, tilt0_ + dTilt_ * t, spin0_ + dSpin_ * t);
+  return machineAxis(kin, machine_->tilt0 + machine_->dTilt * t,
+                     machine_->spin0 + machine_->dSpin * t);
 }
 
 Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
@@ -298,8 +313,10 @@ Vec3 PoseCurve::carry(const Vec3& v, double ta, double tb) const {
   }
   // The cutter's rotation is R(t) = Rz(-C) Ry(-B) (xyzbc-trt) or Rz(-C) Rx(-A)
   // (xyzac-trt), mapping +Z to axis(t): undo it at ta, apply it at tb.
-  const double tiltA = tilt0_ + dTilt_ * ta, spinA = spin0_ + dSpin_ * ta;
-  const double tiltB = tilt0_ + dTilt_ * tb, spinB = spin0_ + dSpin_ * tb;
+  const double tiltA = machine_->tilt0 + machine_->dTilt * ta,
+               spinA = machine_->spin0 + machine_->dSpin * ta;
+  const double tiltB = machine_->tilt0 + machine_->dTilt * tb,
+               spinB = machine_->spin0 + machine_->dSpin * tb;
   if (tableBC()) return rotZ(rotY(rotY(rotZ(v, spinA), tiltA), -tiltB), -spinB);
   return rotZ(rotX(rotX(rotZ(v, spinA), tiltA), -tiltB), -spinB);
 }
@@ -327,17 +344,17 @@ void PoseCurve::frame(double t, PoseFrame& f) const {
 
 Vec3 PoseCurve::rotarySpin(double t) const {
   // R = A(t) B(t) with A = Rz(-C) and B = Ry(-B) or Rx(-A): Omega = Omega_A + A Omega_B.
-  const double spin = spin0_ + dSpin_ * clampUnit(t);
-  const Vec3 tiltAxis = tableBC() ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
-  return Vec3{0, 0, -dSpin_} + rotZ(tiltAxis, -spin);
+  const double spin = machine_->spin0 + machine_->dSpin * clampUnit(t);
+  const Vec3 tiltAxis = tableBC() ? Vec3{0, -machine_->dTilt, 0} : Vec3{-machine_->dTilt, 0, 0};
+  return Vec3{0, 0, -machine_->dSpin} + rotZ(tiltAxis, -spin);
 }
 
 Vec3 PoseCurve::spinRate(double t) const {
   if (omega_ == 0 || kind_ == Kind::Slerp) return {};
   // d/dt (A Omega_B) = Omega_A x (A Omega_B); Omega_A is constant.
-  const double spin = spin0_ + dSpin_ * clampUnit(t);
-  const Vec3 tiltAxis = tableBC() ? Vec3{0, -dTilt_, 0} : Vec3{-dTilt_, 0, 0};
-  return cross(Vec3{0, 0, -dSpin_}, rotZ(tiltAxis, -spin));
+  const double spin = machine_->spin0 + machine_->dSpin * clampUnit(t);
+  const Vec3 tiltAxis = tableBC() ? Vec3{0, -machine_->dTilt, 0} : Vec3{-machine_->dTilt, 0, 0};
+  return cross(Vec3{0, 0, -machine_->dSpin}, rotZ(tiltAxis, -spin));
 }
 
 }  // namespace scallop

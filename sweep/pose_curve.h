@@ -92,7 +92,7 @@ class PoseCurve {
 
   Vec3 tip(double t) const {
     if (t >= 1) return tip1_;
-    if (!linearTip()) return t <= 0 ? tip0_ : kind_ == Kind::Arc ? arc_->at(t) : forward(t);
+    if (!linearTip()) return t <= 0 ? tip0_ : kind_ == Kind::Arc ? arc_->motion.at(t) : forward(t);
     return tip0_ + (tip1_ - tip0_) * t;
   }
   // d tip / dt (mm per unit t).
@@ -173,18 +173,24 @@ class PoseCurve {
 
   Vec3 axisMiddle_;  // axis(0.5), computed once
   double phi_ = 0;
-  // Rotary: tilt (B or A) and spin (C) angles at t = 0 and their changes, radians.
-  double tilt0_ = 0, dTilt_ = 0, spin0_ = 0, dSpin_ = 0;
   double omega_ = 0;
-  // Joint-linear: q(t) = q0_ + t dq_, the offset e_ and the constant c_ above, mm.
-  Vec3 q0_, dq_, e_, c_;
   double tipAccel_ = 0, tipJerk_ = 0;
-  // Arc: the tip's circle or helix, shared (a pointer keeps the other kinds' moves
-  // small: a scene holds one curve per move).
-  std::shared_ptr<const ArcMotion> arc_;
-  double arcSpeed_ = 0;       // Arc: >= |tip'| over the move, mm per unit t
-  double arcPlaneSpeed_ = 0;  // Arc: >= |tip' - rise n|, mm per unit t
-  Vec3 arcNormal_;            // Arc: n = u x v
+  // What only the machines' and the arcs' curves need, shared (most moves are slerps, and
+  // a scene holds one curve a move: 392 bytes with these inline, 264 without).
+  struct MachineTerms {
+    // Rotary: tilt (B or A) and spin (C) angles at t = 0 and their changes, radians.
+    double tilt0 = 0, dTilt = 0, spin0 = 0, dSpin = 0;
+    // Joint-linear: q(t) = q0 + t dq, the offset e and the constant c above, mm.
+    Vec3 q0, dq, e, c;
+  };
+  struct ArcTerms {
+    ArcMotion motion;       // the tip's circle or helix
+    double speed = 0;       // >= |tip'| over the move, mm per unit t
+    double planeSpeed = 0;  // >= |tip' - rise n|, mm per unit t
+    Vec3 normal;            // n = u x v
+  };
+  std::shared_ptr<const MachineTerms> machine_;
+  std::shared_ptr<const ArcTerms> arc_;
   double arcAcross(const Vec3& N) const;
 };
 

@@ -42,23 +42,49 @@ bool continues(const Planned& a, const Cutter& c, const Vec3& bStart, const Vec3
   return length(cross(da, db)) <= 1e-12 * la * lb && dot(da, db) > 0;
 }
 
+// The xy box of a constant-axis segment's swept solid, from its ends alone: every point
+// of the cutter is tip + s a + rho u with 0 <= s <= L, 0 <= rho <= R and u a unit
+// vector at right angles to the unit axis a, so it lies within R + L |a_xy| of the tip
+// in x and y. Grown by a rounding margin far above the few roundings made here.
+Box3 segmentReach(const Cutter& c, const Vec3& from, const Vec3& to, const Vec3& axis) {
+  const double lean = std::hypot(axis.x, axis.y) / length(axis);
+  const double scale = std::fmax(std::fmax(std::fabs(from.x), std::fabs(from.y)),
+                                 std::fmax(std::fabs(to.x), std::fabs(to.y)));
+  const double reach = c.radius + c.fluteLength * lean + 1e-9 + 1e-12 * scale;
+  Box3 box;
+  box.extend(from);
+  box.extend(to);
+  box.min.x -= reach, box.min.y -= reach, box.max.x += reach, box.max.y += reach;
+  return box;
+}
+
 // Entries are built a batch at a time: the constant-axis segments of a batch in parallel
 // (each once, with its final ends: a merged segment was rebuilt at every move it took
-// in), then appended in path order.
+// in), then appended in path order. With a window, an entry whose box misses it is not
+// built (a segment) or not kept (a turning move); `kept` gets one flag an entry.
 constexpr size_t kBatch = 4096;
 
 void buildPlanned(const std::vector<Cutter>& swept, std::vector<Planned>& planned, size_t count,
-                  std::vector<SweptMove>& turning, std::vector<SweptMove>& out) {
+                  std::vector<SweptMove>& turning, std::vector<SweptMove>& out,
+                  const SweepWindow* window, std::vector<bool>& kept) {
   std::vector<std::optional<SweptSegment>> segments(count);
   tbb::parallel_for(size_t(0), count, [&](size_t i) {
     const Planned& p = planned[i];
-    if (!p.turning) segments[i].emplace(swept[p.cutter], p.from, p.to, p.axis);
+    if (p.turning) return;
+    const Cutter& c = swept[p.cutter];
+    if (!window || window->meets(segmentReach(c, p.from, p.to, p.axis)))
+      segments[i].emplace(c, p.from, p.to, p.axis);
   });
   for (size_t i = 0; i < count; ++i) {
-    if (planned[i].turning)
-      out.push_back(std::move(turning[planned[i].built]));
-    else
-      out.emplace_back(*segments[i]);
+    if (planned[i].turning) {
+      SweptMove& m = turning[planned[i].built];
+      const bool keep = !window || window->meets(m.bounds());
+      if (keep) out.push_back(std::move(m));
+      kept.push_back(keep);
+    } else {
+      if (segments[i]) out.emplace_back(*segments[i]);
+      kept.push_back(segments[i].has_value());
+    }
   }
   planned.erase(planned.begin(), planned.begin() + std::ptrdiff_t(count));
   if (planned.empty() || !planned.front().turning) turning.clear();
@@ -67,8 +93,9 @@ void buildPlanned(const std::vector<Cutter>& swept, std::vector<Planned>& planne
 }  // namespace
 
 std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path,
-                                     const CuttingModel& cutting) {
+                                     const CuttingModel& cutting, const SweepWindow* window) {
   std::vector<SweptMove> out;
+  std::vector<bool> kept;  // an entry a planned move: kept in `out` (the window meets it)
   // Teeth: the spindle angle at the start of each entry of `out` and its rate, rad per
   // mm of the tip's path: phi(s) = phi0 + 2 pi s / (flutes fz), s along every move
   // (rapids too) in file order. fmod by 2 pi is exact, and keeps phi small.
@@ -141,12 +168,14 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
         if (teeth && restart) spindle.back().phaseStart = phaseStart;
         continue;
       }
-      if (planned.size() > kBatch) buildPlanned(swept, planned, planned.size() - 1, turning, out);
+      if (planned.size() > kBatch)
+        buildPlanned(swept, planned, planned.size() - 1, turning, out, window, kept);
       Planned p;
       p.cutter = mv.tool, p.from = curve.tipStart(), p.to = curve.tipEnd(), p.axis = axis;
       planned.push_back(p);
     } else {
-      if (planned.size() > kBatch) buildPlanned(swept, planned, planned.size(), turning, out);
+      if (planned.size() > kBatch)
+        buildPlanned(swept, planned, planned.size(), turning, out, window, kept);
       Planned p;
       p.turning = true, p.built = turning.size(), p.cutter = mv.tool;
       turning.emplace_back(cutter, curve);
@@ -154,13 +183,14 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
     }
     spindle.push_back({phaseStart, radPerMm, mv.tool});
   }
-  buildPlanned(swept, planned, planned.size(), turning, out);
+  buildPlanned(swept, planned, planned.size(), turning, out, window, kept);
   if (teeth) {
     // Each move's edges: the cutter with its teeth (the move holds its spindle
     // envelope), phi(t) = phaseStart + radPerMm len t, len the tip's path length (an
     // arc's: its speed is constant, so phi is linear in the distance along it too).
     size_t i = 0;
     for (SweptMove& m : out) {
+      while (!kept[i]) ++i;
       const Spindle& sp = spindle[i++];
       const double len = m.curve().pathLength();
       m.attachTeeth(std::make_shared<ToothSweep>(cutters[sp.tool], m.curve(), sp.phaseStart,
@@ -171,9 +201,9 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
 }
 
 std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path,
-                                     const CuttingModel& cutting) {
-  if (!path.cutters.empty()) return sweepToolPath(path.cutters, path, cutting);
-  return sweepToolPath(std::vector<Cutter>{cutter}, path, cutting);
+                                     const CuttingModel& cutting, const SweepWindow* window) {
+  if (!path.cutters.empty()) return sweepToolPath(path.cutters, path, cutting, window);
+  return sweepToolPath(std::vector<Cutter>{cutter}, path, cutting, window);
 }
 
 }  // namespace scallop

@@ -13,6 +13,17 @@
 
 namespace scallop {
 
+// An xy window of a map (mm): the lines of its cells lie inside [x0, x1] x [y0, y1]. A
+// sweep given a window keeps only the moves whose swept solid may reach it; the others
+// cannot change a height there. A scene built per band of a map holds the band's moves
+// only (tools/run/tiled_simulation.h: a path whose whole scene does not fit in memory).
+struct SweepWindow {
+  double x0 = -HUGE_VAL, y0 = -HUGE_VAL, x1 = HUGE_VAL, y1 = HUGE_VAL;
+  bool meets(const Box3& box) const {
+    return box.max.x >= x0 && box.min.x <= x1 && box.max.y >= y0 && box.min.y <= y1;
+  }
+};
+
 // Every cutting move becomes one SweptMove whose pose curve is PoseCurve::ofMove (tip
 // linear and axis slerp(from.axis, to.axis, t), or the machine's rotary motion), swept
 // with cutters[move.tool]. Consecutive collinear moves with the same constant axis and
@@ -25,12 +36,17 @@ namespace scallop {
 // without a feed per tooth (neither its own nor the model's), or whose tip follows a
 // machine's curve (TCP off), is an InputError naming the move; an arc's s is its arc
 // length. Arcs (Move::arc) are single moves, never merged.
+//
+// With a `window`, only the entries whose swept solid's box meets it are kept (after
+// merging, so those kept are the same moves, bit for bit, as without a window).
 std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path,
-                                     const CuttingModel& cutting = {});
+                                     const CuttingModel& cutting = {},
+                                     const SweepWindow* window = nullptr);
 
 // The same with path.cutters when the path has its own (a multi-tool program), and
 // otherwise `cutter` for every move.
 std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path,
-                                     const CuttingModel& cutting = {});
+                                     const CuttingModel& cutting = {},
+                                     const SweepWindow* window = nullptr);
 
 }  // namespace scallop

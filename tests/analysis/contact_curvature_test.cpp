@@ -16,6 +16,7 @@
 #include "analysis/simulated_interval.h"
 #include "base/constants.h"
 #include "sweep/cutter_profile.h"
+#include "sweep/cutter_shapes.h"
 #include "sweep/raster.h"
 
 namespace scallop {
@@ -155,12 +156,7 @@ Cutter barrelCutter() {
   chain[0] = {0, 0, p1Rho, p1S, 0};
   chain[1] = {p1Rho, p1S, 5, 15, kFormRadius};
   chain[2] = {5, 15, 5, 30, 0};
-  Cutter c;
-  c.type = CutterType::Profile;
-  c.profile = std::make_shared<const CutterProfile>(CutterProfile::make(chain, "test.profile"));
-  c.radius = c.profile->maxRadius();
-  c.fluteLength = c.profile->fluteLength();
-  return c;
+  return cutterOfChain(CutterType::Profile, chain, "test");
 }
 
 TEST(ContactCurvature, BarrelCutterOfTheGeneralKernelAgrees) {

@@ -19,6 +19,7 @@
 #include "raycast/zmap.h"
 #include "raycast/zmap_caster.h"
 #include "sweep/cutter_profile.h"
+#include "sweep/cutter_shapes.h"
 #include "tools/run/bench_cases.h"
 
 namespace scallop {
@@ -37,12 +38,7 @@ TEST(GeneralCutterCost, DISABLED_B1RasterCellCost) {
     const double top = 20;
     const std::vector<ProfileSegment> chain{{0, 0, rho, s, r},
                                             {rho, s, rho + (top - s) * std::tan(taper), top}};
-    Cutter c;
-    c.type = CutterType::TaperBall;
-    c.profile = std::make_shared<const CutterProfile>(CutterProfile::make(chain, "tool"));
-    c.radius = c.profile->maxRadius();
-    c.fluteLength = c.profile->fluteLength();
-    b.cutter = c;
+    b.cutter = cutterOfChain(CutterType::TaperBall, chain, "tool");
   }
   const SimulationOptions simulation;
   const std::unique_ptr<SweptScene> scene =

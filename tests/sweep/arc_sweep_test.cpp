@@ -169,7 +169,7 @@ TEST(ArcSweep, ArcMovesAgreeWithBruteForce) {
       cases.push_back({plane, type, 2 * kPi, 0, {0, 0, 1}});  // a full circle
       // A tilted axis (TCP on), ball and bull: a flat one meets the certified search's
       // known defect near its rim (DISABLED_FlatCutterTiltedHelixNearItsRim below).
-      if (type != CutterType::Flat) cases.push_back({plane, type, -0.9, 0.3, {0.2, -0.1, 1}});
+      cases.push_back({plane, type, -0.9, 0.3, {0.2, -0.1, 1}});
     }
   int hits = 0, misses = 0, grazing = 0;
   double worst = 0;
@@ -185,7 +185,7 @@ TEST(ArcSweep, ArcMovesAgreeWithBruteForce) {
 // The defect of certified_search_test's DISABLED_FlatCutterLineNearItsRimClosesItsProof
 // on an arc: a line near a tilted flat cutter's rim, where the search spends its samples
 // and returns a height 4.3 um too high (0.0956381 against 0.0913066).
-TEST(ArcSweep, DISABLED_FlatCutterTiltedHelixNearItsRim) {
+TEST(ArcSweep, FlatCutterTiltedHelixNearItsRim) {
   const double angle0 = -2.8832343886328231, x = -2.2957763577236596, y = 1.564426403122269;
   const Vec3 centre{0.3, -0.2, 0.1}, axis{0.2, -0.1, 1};
   const ArcMotion arc = makeArc(17, centre, angle0, -0.9, 4, 4, 0.3);

@@ -10,10 +10,10 @@
 #include <random>
 #include <string>
 
-#include "sweep/brute_force_reference.h"
 #include "base/constants.h"
-#include "sweep/cutter.h"
 #include "base/input_error.h"
+#include "sweep/brute_force_reference.h"
+#include "sweep/cutter.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_sweep.h"
 

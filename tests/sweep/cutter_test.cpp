@@ -12,8 +12,8 @@
 #include <random>
 #include <string>
 
-#include "sweep/brute_force_reference.h"
 #include "base/input_error.h"
+#include "sweep/brute_force_reference.h"
 #include "sweep/swept_segment.h"
 
 namespace scallop {

@@ -19,8 +19,8 @@
 #include <random>
 #include <string>
 
-#include "sweep/brute_force_reference.h"
 #include "base/constants.h"
+#include "sweep/brute_force_reference.h"
 #include "sweep/machine_reference.h"
 #include "sweep/swept_move.h"
 

@@ -56,21 +56,6 @@ Axes randomAxes(std::mt19937_64& rng, bool turning) {
   }
 }
 
-// Level feed, ramp, plunge or a standing tip by k % 4.
-Vec3 randomEnd(std::mt19937_64& rng, int k) {
-  std::uniform_real_distribution<double> u(-0.5, 0.5);
-  switch (k % 4) {
-    case 0:
-      return {6 * u(rng), 6 * u(rng), 0};
-    case 1:
-      return {6 * u(rng), 6 * u(rng), 4 * u(rng)};
-    case 2:
-      return {0, 0, 4 * u(rng)};
-    default:
-      return {0, 0, 0};
-  }
-}
-
 TEST(GeneralCutter, StationaryAgreesWithBallFlatBullKernel) {
   std::mt19937_64 rng(3301);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -113,7 +98,7 @@ TEST(GeneralCutter, MovesAgreeWithBallFlatBullKernel) {
     const test::CutterShape s = test::randomCutterShape(rng, k);
     const Cutter c = Cutter::make(s.type, s.radius, s.cornerRadius, s.fluteLength);
     const Axes ax = randomAxes(rng, k % 2 == 1);
-    const Vec3 p1 = randomEnd(rng, k / 2);
+    const Vec3 p1 = test::randomMoveEnd(rng, k / 2);
     const PoseCurve curve = PoseCurve::linear({{0, 0, 0}, ax.a0}, {p1, ax.a1});
     const SweptMove want(c, curve), got(generalOf(c), curve);
     ASSERT_TRUE(got.turning());  // every move of a general cutter: the certified search
@@ -169,7 +154,7 @@ TEST(GeneralCutter, RandomProfilesAgreeWithBruteForce) {
     const ref::RefCutter rc = refCutterOf(pc);
     const bool turning = (k / 7) % 2 == 1;
     const Axes ax = randomAxes(rng, turning);
-    const Vec3 p1 = randomEnd(rng, k / 14 + k);
+    const Vec3 p1 = test::randomMoveEnd(rng, k / 14 + k);
     const PoseCurve curve = PoseCurve::linear({{0, 0, 0}, ax.a0}, {p1, ax.a1});
     const SweptMove move(c, curve);
     const ref::RefCurve refCurve{

@@ -15,8 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "base/vec3.h"
 #include "sweep/cutter.h"
 #include "sweep/cutter_profile.h"
+#include "sweep/cutter_shapes.h"
 
 namespace scallop::test {
 
@@ -61,15 +63,7 @@ struct ProfileCase {
     for (const ProfilePiece& p : pieces) out.push_back({p.r0, p.s0, p.r1, p.s1, p.radius});
     return out;
   }
-  Cutter cutter() const {
-    Cutter c;
-    c.type = CutterType::Profile;
-    c.profile = std::make_shared<const CutterProfile>(CutterProfile::make(chain(), "tool.profile"));
-    c.radius = c.profile->maxRadius();
-    c.fluteLength = c.profile->fluteLength();
-    c.cornerRadius = 0;
-    return c;
-  }
+  Cutter cutter() const { return cutterOfChain(CutterType::Profile, chain(), "tool"); }
 };
 
 // Walks a chain from the tip: the tangent angle (from +rho towards +s) only grows.
@@ -193,6 +187,22 @@ inline ProfileCase randomProfileCase(std::mt19937_64& rng, int k) {
         return w.done();
       }
     }
+  }
+}
+
+// A move's end from a tip at the origin, by k % 4: a level feed, a ramp, a plunge or a
+// standing tip (mm).
+inline Vec3 randomMoveEnd(std::mt19937_64& rng, int k) {
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  switch (k % 4) {
+    case 0:
+      return {6 * u(rng), 6 * u(rng), 0};
+    case 1:
+      return {6 * u(rng), 6 * u(rng), 4 * u(rng)};
+    case 2:
+      return {0, 0, 4 * u(rng)};
+    default:
+      return {0, 0, 0};
   }
 }
 

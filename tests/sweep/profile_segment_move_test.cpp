@@ -13,6 +13,7 @@
 #include "base/constants.h"
 #include "sweep/brute_force_reference.h"
 #include "sweep/cutter_profile.h"
+#include "sweep/cutter_shapes.h"
 #include "sweep/raster.h"
 #include "sweep/swept_move.h"
 #include "sweep/swept_segment.h"
@@ -33,12 +34,7 @@ TEST(ProfileSegmentMove, BarrelAlongAMoveMatchesBruteForce) {
   chain[0] = {0, 0, p1Rho, p1S, 0};
   chain[1] = {p1Rho, p1S, 5, 15, kFormRadius};
   chain[2] = {5, 15, 5, 30, 0};
-  Cutter barrel;
-  barrel.type = CutterType::Profile;
-  barrel.profile =
-      std::make_shared<const CutterProfile>(CutterProfile::make(chain, "test.profile"));
-  barrel.radius = barrel.profile->maxRadius();
-  barrel.fluteLength = barrel.profile->fluteLength();
+  const Cutter barrel = cutterOfChain(CutterType::Profile, chain, "test");
   ref::RefCutter rc;
   rc.R = 5;
   rc.L = 30;

@@ -23,21 +23,6 @@
 namespace scallop {
 namespace {
 
-// Level feed, ramp, plunge or a standing tip by k % 4, mm.
-Vec3 moveEnd(std::mt19937_64& rng, int k) {
-  std::uniform_real_distribution<double> u(-0.5, 0.5);
-  switch (k % 4) {
-    case 0:
-      return {6 * u(rng), 6 * u(rng), 0};
-    case 1:
-      return {6 * u(rng), 6 * u(rng), 4 * u(rng)};
-    case 2:
-      return {0, 0, 4 * u(rng)};
-    default:
-      return {0, 0, 0};
-  }
-}
-
 TEST(ProfileSweep, AgreesWithCertifiedSearchAndBruteForce) {
   std::mt19937_64 rng(3304);
   std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
@@ -53,7 +38,7 @@ TEST(ProfileSweep, AgreesWithCertifiedSearchAndBruteForce) {
     const Vec3 axis0 =
         k % 3 == 0 ? Vec3{0, 0, 1} : ref::unitFromAngles(0.5 * kPi * u01(rng), 2 * kPi * u01(rng));
     const Vec3 p0{u(rng), u(rng), u(rng)};
-    const Vec3 p1 = p0 + moveEnd(rng, k);
+    const Vec3 p1 = p0 + test::randomMoveEnd(rng, k);
     const PoseCurve curve = PoseCurve::linear({p0, axis0}, {p1, axis0});
     const Vec3 a = curve.axis(0);
     const SweptMove move(c, curve);

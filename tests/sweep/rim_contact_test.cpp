@@ -805,10 +805,13 @@ TEST(RimContact, SweptMoveAgreesWithBruteForceNearCamLikeEdges) {
 // KNOWN OPEN DEFECT, disabled so that it shows in every run as a disabled test: a line
 // near the footprint's edge whose lowest point is on the flank (t = 0.282) exhausts the
 // certified search's 1 024 samples before its proof closes. Its height is right (within
-// 2.5e-10 mm of the reference), but unproven. The commit before the rim contact
-// (50decb3) does the same: the rim contact does not apply (flank, not corner), and the
-// branch and bound's bounds are weak where the line leaves the cutter. Enable when the
-// search proves it.
+// 2.5e-10 mm of the reference), but unproven. Traced (stop 40): the line meets the cutter
+// only for t in (0.28201210, 0.38), leaving it through the flute top, and f is lowest
+// where it leaves; for t below that the line misses, but the grown cutter's bound and
+// the ray clearance treat the flank as if it went on above the flute top, so they prove
+// the miss only on intervals whose width shrinks with their distance from the exit: ~30
+// such intervals stay open at once and the budget runs out. A bound that sees the flute
+// top (the top cap's plane, or the rim circle's distance from the line) would close it.
 TEST(RimContact, DISABLED_FlankLineNearTheEdgeClosesItsProof) {
   Cutter cutter =
       Cutter::make(CutterType::Bull, 2.3652465323973457, 1.123682671710263, 6.3833612668695023);

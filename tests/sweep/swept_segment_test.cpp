@@ -12,8 +12,8 @@
 #include <random>
 #include <vector>
 
-#include "sweep/brute_force_reference.h"
 #include "base/constants.h"
+#include "sweep/brute_force_reference.h"
 #include "sweep/cutter.h"
 
 namespace scallop {

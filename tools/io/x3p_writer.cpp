@@ -14,25 +14,11 @@
 #include "base/version.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/md5.h"
+#include "tools/io/xml_text.h"
 
 namespace scallop {
 
 namespace {
-
-std::string xmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t')
-      out += c;
-  }
-  return out;
-}
 
 std::string axis(const char* name, const char* type, double increment, double offset) {
   return fmt::format(

@@ -5,27 +5,14 @@
 #include <algorithm>
 #include <vector>
 
+#include "tools/io/xml_text.h"
+
 namespace scallop {
 
 namespace {
 
 constexpr double kPictureWidthPx = 240, kDrawingHeightPx = 300, kMarginPx = 24;
 constexpr double kTitlePx = 22, kFootPx = 34;
-
-std::string escapeXml(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else
-      out += c;
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -67,7 +54,7 @@ std::string cutterProfileSvg(const Cutter& cutter, const std::string& title) {
       "stroke-linejoin=\"round\"/>\n"
       "<line x1=\"{2:g}\" y1=\"{5:.4f}\" x2=\"{2:g}\" y2=\"{6:.4f}\" stroke=\"#888\" "
       "stroke-dasharray=\"6 3 1 3\"/>\n",
-      kPictureWidthPx, height, axisX, escapeXml(title), path, y(-0.05 * L) + 4, y(L) - 8);
+      kPictureWidthPx, height, axisX, xmlEscape(title), path, y(-0.05 * L) + 4, y(L) - 8);
   // The joins of the chain (right side): where one segment gives way to the next.
   for (const ProfileSegment& seg : chain)
     svg += fmt::format("<circle cx=\"{:.4f}\" cy=\"{:.4f}\" r=\"2.5\" fill=\"#d1495b\"/>\n",

@@ -22,12 +22,11 @@ double availableMemoryBytes() {
   return available > 0 ? available : 8.0 * (1ull << 30);
 }
 
-namespace {
-
-double mapBytes(const GridSpec& grid) {
-  // Heights are held in double, plus one float32 row buffer per image while writing.
+double heightMapBytes(const GridSpec& grid) {
   return double(grid.nx) * double(grid.ny) * (sizeof(double) + sizeof(float));
 }
+
+namespace {
 
 std::string mapRefusal(const GridSpec& grid, double need, double available) {
   std::ostringstream msg;
@@ -40,14 +39,21 @@ std::string mapRefusal(const GridSpec& grid, double need, double available) {
   return msg.str();
 }
 
-std::string sceneRefusal(size_t moves, double need, double available) {
+std::string sceneRefusal(const RunMemory& memory, bool wholeMap) {
+  const double need = memory.sceneBytes, available = memory.availableBytes;
   std::ostringstream msg;
-  msg << "the exact simulation of " << moves << " cutting moves needs about "
+  msg << "the exact simulation of " << memory.cuttingMoves << " cutting moves needs about "
       << std::setprecision(need < 1e15 ? 15 : 3) << need << " bytes (" << std::fixed
       << std::setprecision(1) << need / double(1ull << 30)
       << " GiB) of memory for its culling scene, but only " << available / double(1ull << 30)
-      << " GiB are available; split the path into several jobs (--tiled bounds only the "
-         "height map's memory, not the scene's)";
+      << " GiB are available; ";
+  if (wholeMap || !(memory.largestBandBytes > 0))
+    msg << "split the path into several jobs";
+  else
+    msg << "in bands of rows, each with the scene of the moves that reach it, the largest "
+           "band still needs "
+        << std::setprecision(1) << memory.largestBandBytes / double(1ull << 30)
+        << " GiB; split the path into several jobs or use a larger grid.spacing";
   return msg.str();
 }
 
@@ -56,7 +62,7 @@ std::string sceneRefusal(size_t moves, double need, double available) {
 RunMemory estimateRunMemory(const Job& job, const GridSpec& grid, bool exact,
                             double availableBytes) {
   RunMemory memory;
-  memory.mapBytes = mapBytes(grid);
+  memory.mapBytes = heightMapBytes(grid);
   if (exact)
     // The same stock box the scene is built with (tiled_simulation.cpp), so the estimate
     // chooses its culling tiles alike.
@@ -68,16 +74,16 @@ RunMemory estimateRunMemory(const Job& job, const GridSpec& grid, bool exact,
 
 void requireRunFitsMemory(const Job& job, const GridSpec& grid, const RunMemory& memory,
                           bool wholeMap, const std::string& whyNotInBands) {
-  if (!memory.sceneFits())
-    throw InputError(job.source + ": path",
-                     sceneRefusal(memory.cuttingMoves, memory.sceneBytes, memory.availableBytes));
+  // Held whole, the map has one scene; otherwise it may have one a band.
+  if (wholeMap ? !memory.wholeSceneFits() : !memory.sceneFits())
+    throw InputError(job.source + ": path", sceneRefusal(memory, wholeMap));
   if (wholeMap && !memory.mapFits())
     throw InputError(job.source + ": grid.spacing",
                      mapRefusal(grid, memory.mapBytes, memory.availableBytes) + whyNotInBands);
 }
 
 void checkGridFitsMemory(const GridSpec& grid, const std::string& field) {
-  const double need = mapBytes(grid);
+  const double need = heightMapBytes(grid);
   const double available = availableMemoryBytes();
   if (need > 0.8 * available) throw InputError(field, mapRefusal(grid, need, available));
 }

@@ -10,6 +10,10 @@ namespace scallop {
 
 struct Job;
 
+// The bytes a map on `grid` takes while a run holds it: its heights in double, plus
+// their float32 copy while writing.
+double heightMapBytes(const GridSpec& grid);
+
 // /proc/meminfo's MemAvailable, bytes (8 GiB when it cannot be read).
 double availableMemoryBytes();
 
@@ -20,8 +24,14 @@ struct RunMemory {
   double sceneBytes = 0;  // the exact run's culling scene (0 for the stamp baseline)
   size_t cuttingMoves = 0;
   double availableBytes = 0;
+  // A scene per band (the whole scene does not fit): the most that one band holds, its
+  // scene and its rows of the map, bytes (0: one scene for the whole map).
+  double largestBandBytes = 0;
   bool mapFits() const { return mapBytes <= 0.8 * availableBytes; }
-  bool sceneFits() const { return sceneBytes <= 0.8 * availableBytes; }
+  bool sceneFits() const {
+    return (largestBandBytes > 0 ? largestBandBytes : sceneBytes) <= 0.8 * availableBytes;
+  }
+  bool wholeSceneFits() const { return sceneBytes <= 0.8 * availableBytes; }
 };
 
 // The map's bytes on `grid` and, for an exact run, the scene's (its own estimate,

@@ -2,11 +2,13 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <tuple>
 #include <utility>
 
 #include "base/input_error.h"
+#include "raycast/simulation.h"
 #include "tools/io/job.h"
 #include "tools/run/simulation_run.h"
 
@@ -41,6 +43,24 @@ std::string bannerOf(const Job& job, const SimulationPlan& plan) {
   return line + (job.cutting.teeth() ? ", teeth" : "");
 }
 
+// Bands small enough that each one's scene and rows of the map fit (RunMemory::
+// largestBandBytes): halving the rows from bandLayout's until they do, or down to one row
+// (then memory.sceneFits() stays false and the run is refused, naming the bytes).
+BandLayout sceneBandLayout(const Job& job, SimulationPlan& plan, int64_t requestedRows) {
+  BandLayout layout = bandLayout(plan.grid, requestedRows);
+  for (;;) {
+    const std::vector<double> scenes = estimateBandSceneBytes(
+        job.cutter, job.path, job.stock, plan.grid, layout.bandRows, job.cutting);
+    double largest = 0;
+    for (int64_t b = 0; b < layout.bands; ++b)
+      largest =
+          std::max(largest, scenes[size_t(b)] + heightMapBytes(layout.bandGrid(b, plan.grid)));
+    plan.memory.largestBandBytes = std::max(largest, 1.0);
+    if (plan.memory.sceneFits() || requestedRows > 0 || layout.bandRows == 1) return layout;
+    layout = bandLayout(plan.grid, std::max<int64_t>(1, layout.bandRows / 2));
+  }
+}
+
 }  // namespace
 
 BandLayout bandLayout(const GridSpec& grid, int64_t requestedRows) {
@@ -68,10 +88,14 @@ SimulationPlan planSimulation(const Job& job, const RunSettings& settings, doubl
   plan.exact = settings.method == "exact";
   plan.bandsAsked = settings.tiled || settings.tileRows > 0 || !settings.bands.empty();
   plan.memory = estimateRunMemory(job, plan.grid, plan.exact, availableBytes);
+  // A path whose whole scene does not fit runs in bands, each with the scene of the moves
+  // that reach it (tiled_simulation.h).
+  plan.sceneBands = plan.exact && !plan.memory.wholeSceneFits();
   // The stamp baseline holds the whole map (its bands are refused by the run).
-  plan.inBands = plan.bandsAsked || (plan.exact && !plan.memory.mapFits());
+  plan.inBands = plan.bandsAsked || plan.sceneBands || (plan.exact && !plan.memory.mapFits());
   if (plan.inBands) {
-    plan.layout = bandLayout(plan.grid, settings.tileRows);
+    plan.layout = plan.sceneBands ? sceneBandLayout(job, plan, settings.tileRows)
+                                  : bandLayout(plan.grid, settings.tileRows);
     plan.partial = !settings.bands.empty();
     plan.endBand = plan.layout.bands;
     if (plan.partial)

@@ -41,8 +41,11 @@ struct SimulationPlan {
   bool exact = true;        // --method exact (not the stamp baseline)
   bool bandsAsked = false;  // --tiled, --tile-rows or --bands
   RunMemory memory;         // the map and the scene, bytes, against what is available
-  // In bands: asked for, or an exact run whose map does not fit in memory.
+  // In bands: asked for, or an exact run whose map or whole scene does not fit in memory.
   bool inBands = false;
+  // The whole path's scene does not fit: each band builds the scene of the moves that
+  // reach it (memory.largestBandBytes), bands halved until the largest one fits.
+  bool sceneBands = false;
   BandLayout layout;      // the bands (of settings.tileRows rows) when inBands
   int64_t firstBand = 0;  // bands [firstBand, endBand) run here; --bands K:M
   int64_t endBand = 0;    // narrows them and writes band files instead of outputs

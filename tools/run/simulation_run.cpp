@@ -166,8 +166,11 @@ RunOutcome runSimulation(const Job& job, const RunSettings& settings) {
   if (plan.inBands && !plan.bandsAsked) {
     if (job.design)
       throw InputError(job.source + ": design",
-                       "the map does not fit in memory, which the design comparison needs; use a "
-                       "larger grid.spacing");
+                       plan.sceneBands
+                           ? "the path's culling scene does not fit in memory whole, which the "
+                             "design comparison needs; split the path into several jobs"
+                           : "the map does not fit in memory, which the design comparison needs; "
+                             "use a larger grid.spacing");
     requireBandsFitDisk(job, plan, settings.outDir);
   }
   if (plan.inBands) return runTiledSimulation(job, plan, settings);

@@ -67,11 +67,20 @@ void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::
             need / kGiB, outDir, free / kGiB,
             imageSized ? "" : ", and more rows or columns than an image"));
   }
-  std::fprintf(stderr,
-               "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "
-               "bands of %lld rows (--tiled)\n",
-               (long long)grid.nx, (long long)grid.ny, (long long)plan.layout.bands,
-               (long long)plan.layout.bandRows);
+  if (plan.sceneBands)
+    std::fprintf(stderr,
+                 "scallop: the culling scene of %zu cutting moves (%.1f GiB) does not fit in "
+                 "memory; computing the map in %lld bands of %lld rows, each with the scene of "
+                 "the moves that reach it (at most %.1f GiB a band)\n",
+                 plan.memory.cuttingMoves, plan.memory.sceneBytes / kGiB,
+                 (long long)plan.layout.bands, (long long)plan.layout.bandRows,
+                 plan.memory.largestBandBytes / kGiB);
+  else
+    std::fprintf(stderr,
+                 "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "
+                 "bands of %lld rows (--tiled)\n",
+                 (long long)grid.nx, (long long)grid.ny, (long long)plan.layout.bands,
+                 (long long)plan.layout.bandRows);
 }
 
 RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
@@ -99,10 +108,14 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
   options.cast.progress = [&](int64_t done, int64_t) {
     if (settings.progress) settings.progress(doneCells + done, totalCells);
   };
-  const std::unique_ptr<SweptScene> scene =
-      buildScene(job.cutter, job.path, job.stock, grid.spacing, options);
-  options.cast.progress(0, 0);  // a Ctrl-C during the build stops here (as in simulate())
-  const SceneStats sceneStats = scene->stats();
+  // One scene for every band, or (plan.sceneBands) one a band, of the moves that reach
+  // it, built when the band starts: the same heights (sweepToolPath's window).
+  std::unique_ptr<SweptScene> scene;
+  if (!plan.sceneBands) {
+    scene = buildScene(job.cutter, job.path, job.stock, grid.spacing, options);
+    options.cast.progress(0, 0);  // a Ctrl-C during the build stops here (as in simulate())
+  }
+  const SceneStats sceneStats = scene ? scene->stats() : SceneStats();
 
   std::unique_ptr<TiledOutput> output;
   json run;
@@ -116,9 +129,12 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
            {"band_rows", layout.bandRows},
            {"bands", layout.bands},
            {"exr_tile_rows", layout.tileHeight},
-           {"cutting_moves", job.path.cuttingMoves()},
-           {"swept_segments", sceneStats.segments},
-           {"culling_tiles", sceneStats.tiles}};
+           {"cutting_moves", job.path.cuttingMoves()}};
+    // Per-band scenes differ from band to band: their sizes go with each band's stats.
+    if (plan.sceneBands)
+      run["scene_bands"] = true;
+    else
+      run["swept_segments"] = sceneStats.segments, run["culling_tiles"] = sceneStats.tiles;
     if (!job.isRaster) run["path_file_md5"] = fileMd5(job.pathFile);
     if (job.cutting.teeth()) run["feed_marks_plan"] = feedMarkPlan(job, grid);
     if (job.frame) run["frame"] = job.frame->describe(), run["uncut_height"] = job.stockTop();
@@ -146,6 +162,14 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
   const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   for (int64_t b = first; b < end; ++b) {
     ZMap band(layout.bandGrid(b, grid), job.stock.max.z);
+    SceneStats bandScene = sceneStats;
+    if (plan.sceneBands) {
+      scene.reset();  // the last band's scene goes before this band's is built
+      const SweepWindow window = cellWindow(band.grid());
+      scene = buildScene(job.cutter, job.path, job.stock, grid.spacing, options, &window);
+      options.cast.progress(0, 0);
+      bandScene = scene->stats();
+    }
     if (job.frame) fillFrameStock(band, job.stock, *job.frame);
     const CastStats cast = castZMap(*scene, band, options.cast);
     FrameCellCounts frameCells;
@@ -155,10 +179,14 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
                   {"cells", cast.cells},
                   {"exact_evaluations", cast.exactEvaluations},
                   {"cast_seconds", cast.seconds},
-                  {"scene_build_seconds", sceneStats.buildSeconds},
+                  {"scene_build_seconds", bandScene.buildSeconds},
                   {"min_height", band.minHeight()},
                   {"max_height", band.maxHeight()},
                   {"threads", threads}};
+    if (plan.sceneBands)
+      stats["scene"] = {{"swept_segments", bandScene.segments},
+                        {"culling_tiles", bandScene.tiles},
+                        {"bytes", bandScene.bytes()}};
     if (job.isRaster && !job.frame) stats["raster"] = rasterMeasurements(job, band);
     if (job.frame) stats["frame"] = frameCellsJson(frameCells);
     if (output) {
@@ -188,8 +216,9 @@ TiledRun tiledRunFromBands(const json& run) {
   out.record.inputs = run.at("inputs");
   out.record.grid = gridFromJson(run.at("grid"));
   out.record.cuttingMoves = run.at("cutting_moves").get<int64_t>();
-  out.record.sweptSegments = run.at("swept_segments").get<int64_t>();
-  out.record.cullingTiles = run.at("culling_tiles").get<int64_t>();
+  // Absent with a scene a band: the bands' stats carry theirs (TiledOutput::add).
+  out.record.sweptSegments = run.value("swept_segments", int64_t(0));
+  out.record.cullingTiles = run.value("culling_tiles", int64_t(0));
   out.record.tiled = {{"bands", run.at("bands")},
                       {"band_rows", run.at("band_rows")},
                       {"exr_tile_rows", run.at("exr_tile_rows")}};
@@ -246,6 +275,14 @@ void TiledOutput::add(const ZMap& band, const json& stats) {
     hasFrame_ = true;
   }
   castSeconds_ += stats.at("cast_seconds").get<double>();
+  if (stats.contains("scene")) {
+    const json& scene = stats["scene"];
+    sceneBands_ = true;
+    bandSegments_ += scene.at("swept_segments").get<int64_t>();
+    bandTiles_ += scene.at("culling_tiles").get<int64_t>();
+    bandSceneSeconds_ += stats.at("scene_build_seconds").get<double>();
+    largestBandSceneBytes_ = std::max(largestBandSceneBytes_, scene.at("bytes").get<double>());
+  }
   evaluations_ += stats.at("exact_evaluations").get<double>();
   if (stats.contains("raster")) {
     const json& r = stats["raster"];
@@ -276,6 +313,13 @@ json TiledOutput::finish(double sceneSeconds, double totalSeconds, int threads) 
   writeSeconds_ += secondsSince(t0);
 
   RunRecord record = run_.record;
+  if (sceneBands_) {
+    record.sweptSegments = bandSegments_;
+    record.cullingTiles = bandTiles_;
+    record.tiled["scene_per_band"] = {{"largest_scene_bytes", largestBandSceneBytes_},
+                                      {"swept_segments_summed_over_bands", bandSegments_}};
+    sceneSeconds = bandSceneSeconds_;
+  }
   record.requestedThreads = threads;
   record.sceneSeconds = sceneSeconds;
   record.castSeconds = castSeconds_;

@@ -2,9 +2,12 @@
 //
 // A band is a run of whole image rows (full width), counted from the top (image row 0,
 // the largest y) so that rows reach the writers in file order. One culling scene of
-// the whole path serves every band; each band is a ZMap over grid.rows(j0, j1), whose
-// cell centres are the full grid's to the bit, so a tiled map equals the in-memory one.
-// Memory: the scene, one band (<= 256 MB of doubles by default) and its float copy.
+// the whole path serves every band, or, when that scene does not fit in memory
+// (SimulationPlan::sceneBands), each band builds the scene of the moves that reach it
+// (sweepToolPath's window: the same moves, so the same heights); each band is a ZMap over
+// grid.rows(j0, j1), whose cell centres are the full grid's to the bit, so a tiled map equals the
+// in-memory one. Memory: the scene (or a band's), one band (<= 256 MB of doubles by default) and
+// its float copy.
 //
 // Bands are independent, so a range of them can run in another process
 // (`simulate --bands K:M` writes DIR/band-K.raw + band-K.json) and `scallop merge DIR`
@@ -78,6 +81,11 @@ class TiledOutput {
   double evaluations_ = 0;
   nlohmann::json raster_, pathFile_;
   FrameCellCounts frameCells_;  // a frame's void and cut-through cells, summed
+  // A scene a band (SimulationPlan::sceneBands): the bands' scenes, summed (a move that
+  // reaches two bands is in both), their build times summed, the largest one's bytes.
+  bool sceneBands_ = false;
+  int64_t bandSegments_ = 0, bandTiles_ = 0;
+  double bandSceneSeconds_ = 0, largestBandSceneBytes_ = 0;
   bool hasFrame_ = false;
   HeightMoments moments_;  // raw heights of the bands so far, merged in band order
   std::unique_ptr<FeedMarkSampler> feedMarks_;  // a teeth run's (feed_mark_report.h)
