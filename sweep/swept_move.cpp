@@ -47,6 +47,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "sweep/certified_search.h"
 #include "sweep/contact_knots.h"
@@ -60,7 +61,37 @@ namespace scallop {
 namespace {
 // rad per unit t: moves that turn less try step 4a's proof from the expected contact only.
 constexpr double kHalvesTurn = 0.05;
+// Contact normals flatter than this (|n.z|) give the rest's plane too steep a slope to
+// settle anything: the general path decides there.
+constexpr double kTipBallMinNormalZ = 0.05;
+// Section memos of tip balls on a constant axis, per thread (the scene keeps memos for
+// constant-axis moves only; a general cutter's move is not one). A memo is used only
+// for its own segment and section, so heights do not depend on which slot a move takes.
+constexpr int kTipBallMemos = 8;
 }  // namespace
+
+struct SweptMove::TipBallMove {
+  SweptMove move;  // the hemisphere swept along the same curve
+  SweptRest rest;  // the rest of the cutter over the move
+};
+
+void SweptMove::makeTipBall() {
+  const TipBall ball = tipBallOf(cutter_);
+  if (!ball.valid || !curve_.linearTip()) return;
+  tipBall_ = std::make_shared<const TipBallMove>(
+      TipBallMove{SweptMove(tipBallCutter(ball), curve_), SweptRest(cutter_, ball, curve_)});
+}
+
+LowestPoint SweptMove::tipBallLowestPoint(double x, double y, double cutoff,
+                                          double cutoffAnchor) const {
+  const SweptMove& ball = tipBall_->move;
+  SectionMemo* memo = nullptr;
+  if (!ball.turning()) {
+    thread_local SectionMemo memos[kTipBallMemos];
+    memo = &memos[(reinterpret_cast<uintptr_t>(this) / sizeof(SweptMove)) % kTipBallMemos];
+  }
+  return ball.envelopeLowestPoint(x, y, memo, cutoff, cutoffAnchor);
+}
 
 SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
     : cutter_(cutter),
@@ -74,6 +105,7 @@ SweptMove::SweptMove(const Cutter& cutter, const PoseCurve& curve)
                                                     curve_.axis(0));
   else
     tipSpeed_ = curve_.tipSpeedBound(), zTop_ = support({0, 0, 1}), knotsId_ = newContactKnotsId();
+  if (cutter.general()) makeTipBall();
 }
 
 SweptMove::SweptMove(const SweptSegment& segment)
@@ -90,6 +122,7 @@ SweptMove::SweptMove(const SweptSegment& segment)
     segment_ = std::make_shared<const SweptSegment>(segment);
   else
     tipSpeed_ = curve_.tipSpeedBound(), zTop_ = support({0, 0, 1}), knotsId_ = newContactKnotsId();
+  if (cutter_.general()) makeTipBall();
 }
 
 void SweptMove::setContactKnotSpacing(double mm) {
@@ -136,10 +169,13 @@ LowestPoint SweptMove::stationaryLowestPoint(double t, double x, double y) const
 }
 
 LowestPoint SweptMove::planeHint(double x, double y) const {
+  // A plane needs only a normal of the solid: the tip ball's is one where it is lowest.
+  if (tipBall_) return tipBall_->move.planeHint(x, y);
   return segment_ ? segment_->lowestPoint(x, y) : stationaryLowestPoint(0.5, x, y);
 }
 
 LowestPoint SweptMove::locatedPlaneHint(double x, double y, double tStart) const {
+  if (tipBall_) return tipBall_->move.locatedPlaneHint(x, y, tStart);
   if (segment_ || cutter_.general() || !(cutter_.cornerRadius > 0)) return planeHint(x, y);
   RimStart start;
   start.t = tStart;
@@ -167,6 +203,7 @@ LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo
 }
 
 bool SweptMove::clearsAbove(double x, double y, double z, double radius) const {
+  if (tipBall_) return tipBall_->rest.floor() > z && tipBall_->move.clearsAbove(x, y, z, radius);
   return turning() && raysClearMove(cutter_, curve_, {x, y, z}, radius);
 }
 
@@ -182,6 +219,21 @@ LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double
 LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
                                           double cutoffAnchor) const {
   const Cutter& c = cutter_;
+  // A general cutter with a ball tip: the hemisphere's height where the rest of the
+  // cutter provably stays above it (tip_ball.h), a miss where both stay above the cutoff.
+  if (tipBall_) {
+    const LowestPoint ball = tipBallLowestPoint(x, y, cutoff, cutoffAnchor);
+    const SweptRest& rest = tipBall_->rest;
+    if (ball.hit) {
+      // The rest's floor over the whole move first (one comparison: on CAM paths the
+      // flank starts far above the cusps), then its plane along the contact normal.
+      if (rest.floor() > ball.z ||
+          (ball.normal.z < -kTipBallMinNormalZ && rest.lowerBound(ball.normal, x, y) > ball.z))
+        return ball;
+    } else if (cutoff < HUGE_VAL && rest.floor() >= cutoff) {
+      return {};
+    }
+  }
   // A general cutter on a constant-axis move with a linear tip: f is convex, Kelley's
   // method proves the height in a few exact evaluations (profile_sweep.h); where it
   // cannot close, the steps below decide.

@@ -21,6 +21,7 @@
 #include "sweep/cutter.h"
 #include "sweep/pose_curve.h"
 #include "sweep/swept_segment.h"
+#include "sweep/tip_ball.h"
 #include "sweep/tooth_sweep.h"
 
 namespace scallop {
@@ -105,11 +106,17 @@ class SweptMove {
   // envelopeLowestPoint's body, forced inline into lowestPoint (swept_move.cpp).
   LowestPoint envelopeOf(double x, double y, SectionMemo* memo, double cutoff,
                          double cutoffAnchor) const;
+  // A general cutter with a ball tip (tip_ball.h) on a linear tip: the hemisphere's
+  // sweep, and the lowest the rest of the cutter can reach over the move, mm.
+  struct TipBallMove;
+  void makeTipBall();
+  LowestPoint tipBallLowestPoint(double x, double y, double cutoff, double cutoffAnchor) const;
 
   Cutter cutter_;
   PoseCurve curve_;
   std::shared_ptr<const SweptSegment> segment_;  // constant axis only
   std::shared_ptr<const ToothSweep> teeth_;      // the "teeth" cutting model only
+  std::shared_ptr<const TipBallMove> tipBall_;   // general cutters with a ball tip only
   double reach_ = 0;      // farthest cutter point from the tip, hypot(L, R), mm
   double zTop_ = 0;       // turning: an upper bound of the solid's highest z, mm
   double tipSpeed_ = 0;   // turning: >= |d tip / dt| over the move, mm per unit t

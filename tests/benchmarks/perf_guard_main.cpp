@@ -54,7 +54,10 @@ struct GuardCase {
 };
 // B9 (10^6 short moves at full size; 4 mm: 2e4 cells, 3 443 moves) is measured only when
 // named: scripts/perf-guard.sh --case B9, for the scene's instructions a move.
-constexpr GuardCase kCases[] = {{"B1", 1.0}, {"B3", 1.0}, {"B4", 5.0}, {"B9", 4.0}};
+// B6 and B7 (general-profile cutters on B3's and B1's paths, issue 33) likewise, at B3's
+// and B1's areas: scripts/perf-guard.sh --case B6 --case B7.
+constexpr GuardCase kCases[] = {{"B1", 1.0}, {"B3", 1.0}, {"B4", 5.0},
+                                {"B6", 1.0}, {"B7", 1.0}, {"B9", 4.0}};
 
 void runCase(const GuardCase& c, double extraPercent) {
   BenchCaseOptions options;
@@ -101,14 +104,16 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const scallop::GuardCase& c : scallop::kCases) known = known || w == c.name;
     if (!known) {
-      std::fprintf(stderr, "scallop_perf_guard: unknown case '%s' (expected B1, B3, B4 or B9)\n",
+      std::fprintf(stderr,
+                   "scallop_perf_guard: unknown case '%s' (expected B1, B3, B4, B6, B7 or B9)\n",
                    w.c_str());
       return 1;
     }
   }
   try {
     for (const scallop::GuardCase& c : scallop::kCases) {
-      bool run = wanted.empty() && std::string(c.name) != "B9";
+      const std::string name = c.name;
+      bool run = wanted.empty() && name != "B6" && name != "B7" && name != "B9";
       for (const std::string& w : wanted) run = run || w == c.name;
       if (run) scallop::runCase(c, extraPercent);
     }

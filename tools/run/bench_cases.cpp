@@ -5,8 +5,10 @@
 #include <cstring>
 #include <sstream>
 
+#include "analysis/pass_section.h"
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "sweep/cutter_shapes.h"
 #include "sweep/raster.h"
 #include "sweep/swept_segment.h"
 #include "tools/io/gcode_reader.h"
@@ -29,10 +31,47 @@ RasterSpec b1Raster() {
   return spec;
 }
 
+// B6's taper barrel: form radius 250 mm, tip radius 2 mm, taper 10 deg (issue 33's
+// figures), reference diameter 8 mm (where the form arc's tangent makes the taper with
+// the axis), flute length 20 mm.
+Cutter b6TaperBarrel() {
+  TaperBarrelShape shape;
+  shape.tipRadius = 2, shape.formRadius = 250, shape.taperDeg = 10;
+  shape.referenceDiameter = 8, shape.fluteLength = 20;
+  return cutterOfChain(CutterType::TaperBarrel, taperBarrelChain(shape, "B6"), "B6");
+}
+
+// B7's tapered ball: tip radius 1 mm, taper 5 deg per side, flute length 12 mm (B1's
+// bull's 4 R). The tip radius is B1's corner radius, so at B1's 0.8 mm step-over the
+// cusps (0.4 mm across the feed from each pass) lie on the tip ball, 24 deg from its
+// bottom and far below the taper's tangent point at 85 deg: the tool a rib or blade
+// finish would run, on B1's raster unchanged.
+Cutter b7TaperBall() {
+  TaperBallShape shape;
+  shape.tipRadius = 1, shape.taperDeg = 5, shape.fluteLength = 12;
+  return cutterOfChain(CutterType::TaperBall, taperBallChain(shape, "B7"), "B7");
+}
+
+// B3's passes are 0.5 mm apart; B6's are as far apart as leaves the same scallop on a
+// plane at B3's lead (5 deg) with the taper barrel (analysis/pass_section.h, exact).
+double b6PassGap(const Cutter& barrel) {
+  constexpr double kB3PassGap = 0.5, kB3LeadDeg = 5;
+  const Cutter bull = Cutter::make(CutterType::Bull, 3, 1);
+  double scallop = 0;
+  std::string reason;
+  if (!PassSection::of(bull, kB3LeadDeg, 0).scallop(kB3PassGap, &scallop, &reason))
+    throw InputError("--case", "B6: no scallop for B3's bull: " + reason);
+  Enclosure width;
+  if (!PassSection::of(barrel, kB3LeadDeg, 0).stepOver(scallop, &width))
+    throw InputError("--case", "B6: the taper barrel leaves no scallop of B3's height");
+  return width.low;
+}
+
 }  // namespace
 
 const std::vector<std::string>& benchCaseNames() {
-  static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4", "B5", "B9"};
+  static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4",
+                                              "B5", "B6", "B7", "B9"};
   return names;
 }
 
@@ -161,17 +200,19 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
   BenchCase b;
   b.name = name;
   b.cutter = Cutter::make(CutterType::Bull, 3, 1);
-  if (name == "B1" || name == "B2" || name == "B5") {
+  if (name == "B1" || name == "B2" || name == "B5" || name == "B7") {
     const double square = name == "B5" && options.quick ? std::min(side, kQuickTeethSide) : side;
     b.stock.extend({0, 0, -5});
     b.stock.extend({square, square, 0});
     RasterSpec spec = b1Raster();
     if (name == "B2") spec.segmentLength = 0.05;
+    if (name == "B7") b.cutter = b7TaperBall();
     b.path = makeRaster(b.cutter, b.stock, spec);
     b.grid = gridCovering(0, 0, square, square, 0.001 * coarse);
     b.description = name == "B1"
                         ? "raster, bull R3 r1, lead 5 deg, step-over 0.8 mm, one move per pass"
                     : name == "B2" ? "B1 with every pass cut into 0.05 mm moves (CAM-like)"
+                    : name == "B7" ? "B1's raster with a tapered ball: tip R1, taper 5 deg"
                                    : "B1 with teeth: 2 flutes, fz 0.1 mm (cutting model \"teeth\")";
     if (name == "B5") {
       b.cutting.kind = CuttingModelKind::Teeth;
@@ -189,6 +230,16 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
       b.description = "B3's tips with one constant axis per move (the axis jumps between moves)";
     }
     b.grid = gridCovering(0, 0, side, side, 0.002 * coarse);
+  } else if (name == "B6") {
+    // B3's surface and lead with a taper barrel, its passes as far apart as B3's scallop
+    // allows (b6PassGap).
+    b.cutter = b6TaperBarrel();
+    b.stock.extend({0, 0, -2});
+    b.stock.extend({side, side, 0.6});
+    b.path = parseToolPath(freeformClText(b.cutter, b.stock, b6PassGap(b.cutter), 0.05, 5),
+                           "B6 CL text");
+    b.grid = gridCovering(0, 0, side, side, 0.002 * coarse);
+    b.description = "B3's freeform 5-axis path with a taper barrel (form R250, tip R2, 10 deg)";
   } else if (name == "B4") {
     // OpenCAMLib's drop-cutter raster over the mount_rush relief (tests/data/mount_rush/
     // README.md), over its own stock as examples/mount_rush_ball.json has it.
@@ -219,8 +270,8 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
     b.grid = gridCovering(0, 0, width, 0.5 * width, 0.02 * coarse);
     b.description = "ball R1 finishing G-code, passes 0.1 mm apart, a point every 0.05 mm";
   } else {
-    throw InputError("--case",
-                     "unknown case \"" + name + "\"; expected B1, B2, B3, B3c, B4, B5 or B9");
+    throw InputError(
+        "--case", "unknown case \"" + name + "\"; expected B1, B2, B3, B3c, B4, B5, B6, B7 or B9");
   }
   return b;
 }

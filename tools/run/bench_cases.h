@@ -16,7 +16,7 @@
 namespace scallop {
 
 struct BenchCase {
-  std::string name;         // "B1", "B2", "B3", "B3c", "B4", "B5"
+  std::string name;         // "B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B9"
   std::string description;  // one line for people
   Cutter cutter;
   Box3 stock;
@@ -30,10 +30,10 @@ struct BenchCaseOptions {
   double area = 0;     // > 0: a square stock of this side, mm, instead of 20 x 20 mm
 };
 
-// "B1", "B2", "B3", "B3c", "B4", "B5", "B9" in the order they are reported.
+// "B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B9" in the order they are reported.
 const std::vector<std::string>& benchCaseNames();
-// The cases a bench without --case runs: all but B9 (10^6 moves; minutes and gigabytes
-// at any grid spacing, so it runs only when asked for).
+// The cases a bench without --case runs: B1 to B5 (B6 and B7, the general-profile
+// cutters, and B9, 10^6 moves, run only when asked for: CI's quick bench keeps its time).
 const std::vector<std::string>& defaultBenchCaseNames();
 
 // Throws InputError (field "--case" / "--area") for an unknown name or a bad area.
@@ -50,6 +50,12 @@ const std::vector<std::string>& defaultBenchCaseNames();
 //  B5: B1 with the teeth cutting model (2 flutes, fz 0.1 mm, phase 0). With `quick`
 //      its stock is a 4 mm square (or --area's, if smaller): the teeth cost about
 //      100 times the envelope a cell, and the quick bench runs in CI.
+//  B6: B3's freeform path (lead 5 deg, the axis turning inside every move) with a taper
+//      barrel (form radius 250 mm, tip radius 2 mm, taper 10 deg, reference diameter
+//      8 mm, flute length 20 mm), its passes as far apart as leaves the scallop of B3's
+//      bull at 0.5 mm on a plane at that lead (analysis/pass_section.h); 2 um.
+//  B7: B1's raster with a tapered ball (tip radius 1 mm, taper 5 deg per side, flute
+//      length 12 mm); 1 um.
 //  B9: a program of 10^6 moves (issue 37): ball R1 finishing a 100 x 50 mm stock (--area A:
 //      A x A/2 mm), passes along X 0.1 mm apart with a point every 0.05 mm on
 //      finishingHeight, written by finishingGcode and read through the G-code reader;
