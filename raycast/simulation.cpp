@@ -5,6 +5,7 @@
 
 #include "raycast/tile_grid.h"
 #include "sweep/contact_knots.h"
+#include "sweep/tip_ball.h"
 
 namespace scallop {
 
@@ -92,6 +93,8 @@ size_t visitMoveSceneBytes(const Cutter& cutter, const ToolPath& path, const Box
   const double flute = cutter.fluteLength + cutter.teeth.axialReach();
   SceneOptions tiling;
   tiling.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
+  // A general cutter with a ball tip holds the hemisphere's move beside its own.
+  const bool tipBall = cutter.general() && tipBallOf(cutter).valid;
   size_t counted = 0;
   for (const Move& m : path.moves) {
     if (!mayCut(path, m, R, flute, stock.max.z)) continue;
@@ -102,7 +105,7 @@ size_t visitMoveSceneBytes(const Cutter& cutter, const ToolPath& path, const Box
         arc ? PoseCurve::ofMove(path, m).pathLength() : length(m.to.tip - m.from.tip);
     const double T = cullingTileSide(R, len, w * h, tiling);
     const bool turning = arc || PoseCurve::turns(m.from.axis, m.to.axis);
-    visit(r, double(SweptMove::bytesPerMove(turning, cutting.teeth())) +
+    visit(r, double(SweptMove::bytesPerMove(turning, cutting.teeth(), tipBall)) +
                  kBytesPerTile * std::fmax(1, std::ceil(w / T)) * std::fmax(1, std::ceil(h / T)));
     ++counted;
   }

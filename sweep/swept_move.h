@@ -10,7 +10,7 @@
 // mm of the height returned.
 //
 // Memory: sizeof(SweptMove) bytes per move (472), plus, for a constant-axis
-// move, one SweptSegment on the heap (952 bytes; see bytesPerMove()).
+// move, one SweptSegment on the heap (1 048 bytes; see bytesPerMove()).
 #pragma once
 
 #include <cmath>
@@ -93,8 +93,10 @@ class SweptMove {
   const SweptSegment* segment() const { return segment_.get(); }
 
   // Bytes a move of this kind holds (the object and what it owns), for memory
-  // estimates made before a scene is built.
-  static size_t bytesPerMove(bool turning, bool teeth = false);
+  // estimates made before a scene is built; `tipBall`: a general cutter with a ball
+  // tip (tip_ball.h), which holds the hemisphere's move too.
+  static size_t bytesPerMove(bool turning, bool teeth = false, bool tipBall = false);
+  bool hasTipBall() const { return tipBall_ != nullptr; }
 
   // Searches of turning moves, over all threads so far, that ran out of samples before
   // their proof closed (their height is still a real point of the solid). Tests

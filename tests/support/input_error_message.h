@@ -3,6 +3,8 @@
 // try/catch in every file.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <string>
 
 #include "base/input_error.h"
@@ -17,6 +19,14 @@ std::string inputErrorMessage(F&& f) {
     return e.what();
   }
   return "";
+}
+
+// Expects `make` to throw an InputError whose message names `field`.
+template <class F>
+void expectRejected(F&& make, const std::string& field) {
+  const std::string message = inputErrorMessage(make);
+  EXPECT_NE(message.find(field), std::string::npos)
+      << (message.empty() ? "accepted, expected an InputError naming " + field : message);
 }
 
 }  // namespace scallop

@@ -16,19 +16,10 @@
 #include "sweep/cutter.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_sweep.h"
+#include "tests/support/input_error_message.h"
 
 namespace scallop {
 namespace {
-
-template <class F>
-void expectRejected(F&& make, const std::string& field) {
-  try {
-    make();
-    ADD_FAILURE() << "accepted, expected an InputError naming " << field;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
-  }
-}
 
 TEST(CutterTeeth, MakeNamesTheFieldOfEachBadValue) {
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -18,6 +18,7 @@
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_reference.h"
 #include "sweep/tooth_sweep.h"
+#include "tests/support/input_error_message.h"
 
 namespace scallop {
 namespace {
@@ -40,16 +41,6 @@ std::vector<SweptMove> sweepOne(const Cutter& c, const Vec3& p0, const Vec3& p1,
 
 bool sameBits(double a, double b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-template <class F>
-void expectRejected(F&& make, const std::string& field) {
-  try {
-    make();
-    ADD_FAILURE() << "accepted, expected an InputError naming " << field;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
-  }
 }
 
 TEST(ToothGeometry, BadValuesNameTheirEntry) {

@@ -14,6 +14,7 @@
 
 #include "base/input_error.h"
 #include "tests/support/cli_harness.h"
+#include "tests/support/input_error_message.h"
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"
 #include "tools/run/simulation_run.h"
@@ -32,12 +33,7 @@ class FrameRun : public test::CliFixture {
     return computeSimulation(loadJobFile(jobFile.string()), settings).map;
   }
   std::string errorOf(const fs::path& jobFile) {
-    try {
-      loadJobFile(jobFile.string());
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "no error";
+    return inputErrorMessage([&] { loadJobFile(jobFile.string()); });
   }
 };
 

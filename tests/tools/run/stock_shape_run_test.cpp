@@ -15,6 +15,7 @@
 #include "base/constants.h"
 #include "base/input_error.h"
 #include "tests/support/cli_harness.h"
+#include "tests/support/input_error_message.h"
 #include "tools/io/height_export.h"
 #include "tools/io/job.h"
 #include "tools/run/job_loader.h"
@@ -74,12 +75,7 @@ double coneTop(double x, double y) {
 class StockShapeRun : public test::CliFixture {
  protected:
   std::string errorOf(const fs::path& jobFile) {
-    try {
-      loadJobFile(jobFile.string());
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "no error";
+    return inputErrorMessage([&] { loadJobFile(jobFile.string()); });
   }
 };
 
