@@ -105,7 +105,8 @@ size_t visitMoveSceneBytes(const Cutter& cutter, const ToolPath& path, const Box
         arc ? PoseCurve::ofMove(path, m).pathLength() : length(m.to.tip - m.from.tip);
     const double T = cullingTileSide(R, len, w * h, tiling);
     const bool turning = arc || PoseCurve::turns(m.from.axis, m.to.axis);
-    visit(r, double(SweptMove::bytesPerMove(turning, cutting.teeth(), tipBall)) +
+    const bool ccw = m.spindle != 0 ? m.spindle < 0 : cutting.counterClockwise;
+    visit(r, double(SweptMove::bytesPerMove(turning, cutting.teeth(), tipBall, ccw)) +
                  kBytesPerTile * std::fmax(1, std::ceil(w / T)) * std::fmax(1, std::ceil(h / T)));
     ++counted;
   }

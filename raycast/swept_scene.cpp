@@ -323,7 +323,8 @@ SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& opti
   impl_->buildEmbree();
   SceneStats& stats = impl_->stats;
   for (const SweptMove& s : impl_->segments)
-    stats.moveBytes += SweptMove::bytesPerMove(s.turning(), s.teeth() != nullptr, s.hasTipBall());
+    stats.moveBytes += SweptMove::bytesPerMove(s.turning(), s.teeth() != nullptr, s.hasTipBall(),
+                                               s.teeth() && s.teeth()->counterClockwise());
   // The tiles kept (their storage's capacity past them is never touched).
   stats.tileBytes = impl_->tiles.size() * sizeof(TileBox);
   stats.gridBytes = impl_->grid->bytes();

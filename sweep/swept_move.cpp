@@ -136,12 +136,13 @@ unsigned long long SweptMove::unprovenSearches() {
   return unprovenCertifiedSearches();
 }
 
-size_t SweptMove::bytesPerMove(bool turning, bool teeth, bool tipBall) {
+size_t SweptMove::bytesPerMove(bool turning, bool teeth, bool tipBall, bool ccwTeeth) {
   // The control block and the segment of a constant-axis move live on the heap, and
   // so do the teeth. A general cutter's constant-axis move has no segment, but its tip
   // ball's move (a ball along the same line) has one: counted as the move's.
   return sizeof(SweptMove) + (turning ? 0 : sizeof(SweptSegment) + 32) +
-         (teeth ? sizeof(ToothSweep) + 32 : 0) + (tipBall ? sizeof(TipBallMove) + 32 : 0);
+         (teeth ? sizeof(ToothSweep) + 32 : 0) + (tipBall ? sizeof(TipBallMove) + 32 : 0) +
+         (teeth && ccwTeeth && !turning ? sizeof(SweptSegment) + 32 : 0);
 }
 
 double SweptMove::support(const Vec3& dir) const {

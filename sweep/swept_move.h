@@ -94,8 +94,10 @@ class SweptMove {
 
   // Bytes a move of this kind holds (the object and what it owns), for memory
   // estimates made before a scene is built; `tipBall`: a general cutter with a ball
-  // tip (tip_ball.h), which holds the hemisphere's move too.
-  static size_t bytesPerMove(bool turning, bool teeth = false, bool tipBall = false);
+  // tip (tip_ball.h), which holds the hemisphere's move too; `ccwTeeth`: teeth turning
+  // counter-clockwise, whose constant-axis move holds its mirror image's segment too.
+  static size_t bytesPerMove(bool turning, bool teeth = false, bool tipBall = false,
+                             bool ccwTeeth = false);
   bool hasTipBall() const { return tipBall_ != nullptr; }
 
   // Searches of turning moves, over all threads so far, that ran out of samples before

@@ -130,5 +130,25 @@ TEST(SceneMemory, ShortMovesTakeTheStatedBytesAMove) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "stated " << stated;
 }
 
+// Teeth turning counter-clockwise: each constant-axis move also holds its mirror image's
+// segment (tool_path_sweep.cpp), which the estimate counts: without it, it erred low.
+TEST(SceneMemory, CounterClockwiseTeethAreCountedWithTheirMirrors) {
+  const Cutter cutter = Cutter::make(CutterType::Ball, 1, 1);
+  const ToolPath path = finishingPath(10, 200);
+  const Box3 stock({0, 0, -2}, {10, 1, 0});
+  SimulationOptions options;
+  options.cutting.kind = CuttingModelKind::Teeth;
+  options.cutting.feedPerTooth = 0.05;
+  options.cutting.counterClockwise = true;
+  const double estimate = estimateSceneBytes(cutter, path, stock, 0.02, nullptr, options.cutting);
+  const std::unique_ptr<SweptScene> scene = buildScene(cutter, path, stock, 0.02, options);
+  EXPECT_GE(estimate, double(scene->stats().bytes()));
+  CuttingModel clockwise = options.cutting;
+  clockwise.counterClockwise = false;
+  const double perMirror = double(sizeof(SweptSegment) + 32);
+  EXPECT_DOUBLE_EQ(estimate - estimateSceneBytes(cutter, path, stock, 0.02, nullptr, clockwise),
+                   2000 * perMirror);
+}
+
 }  // namespace
 }  // namespace scallop
