@@ -54,6 +54,17 @@ MoveReach moveReach(const ToolPath& path, const Move& m, double R, double flute)
   return {tips.min.x - reach, tips.min.y - reach, tips.max.x + reach, tips.max.y + reach};
 }
 
+// The R and flute of the reach above: the spindle envelope's (runout and outward tooth
+// offsets, Cutter::spindleEnvelope), its flutes longer by the teeth that reach below the
+// tip (the envelope is swept that much lower, sweepToolPath).
+struct EnvelopeSize {
+  double R, flute;
+};
+EnvelopeSize envelopeSize(const Cutter& cutter) {
+  return {cutter.radius + cutter.teeth.runout + cutter.teeth.radialReach(),
+          cutter.fluteLength + cutter.teeth.axialReach()};
+}
+
 // A move that can cut: not a rapid, and its lowest tip within R + flute of the stock top.
 bool mayCut(const ToolPath& path, const Move& m, double R, double flute, double stockTop) {
   return !m.rapid && tipsBox(path, m).min.z - R - flute < stockTop;
@@ -63,8 +74,7 @@ bool mayCut(const ToolPath& path, const Move& m, double R, double flute, double 
 
 double programCellsPerMove(const Cutter& cutter, const ToolPath& path, const Box3& stock,
                            double spacing) {
-  const double R = cutter.radius + cutter.teeth.runout + cutter.teeth.radialReach();
-  const double flute = cutter.fluteLength + cutter.teeth.axialReach();
+  const auto [R, flute] = envelopeSize(cutter);
   size_t reaching = 0;
   for (const Move& m : path.moves) {
     if (!mayCut(path, m, R, flute, stock.max.z)) continue;
@@ -88,9 +98,7 @@ size_t visitMoveSceneBytes(const Cutter& cutter, const ToolPath& path, const Box
   // TileBox (152) + Embree's BVH share (measured: 370 on the scene of scene_memory_test)
   // + the most the tile grid takes a tile.
   constexpr double kBytesPerTile = 420 + scene_detail::TileGrid::kMaxBytesPerTile;
-  // With runout or tooth offsets the moves hold the spindle envelope (Cutter::spindleEnvelope).
-  const double R = cutter.radius + cutter.teeth.runout + cutter.teeth.radialReach();
-  const double flute = cutter.fluteLength + cutter.teeth.axialReach();
+  const auto [R, flute] = envelopeSize(cutter);
   SceneOptions tiling;
   tiling.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
   // A general cutter with a ball tip holds the hemisphere's move beside its own.
