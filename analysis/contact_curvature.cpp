@@ -18,13 +18,7 @@ ProcedureResult notApplicable(const std::string& why) {
   return {false, 0.0, std::string(kName) + ": " + why};
 }
 
-// The profile arc the contact lies on: its radius and its centre's distance from the
-// axis (negative across it), mm.
-struct ContactArc {
-  bool found = false;
-  double radius = 0, centreRho = 0;
-  std::string reason;  // when not found
-};
+}  // namespace
 
 // In the (rho, s) half-plane the contact's outward normal is (sin psi, -cos psi), at
 // the angle psi - 90 deg from +rho. Along a convex profile from the tip up the
@@ -36,9 +30,10 @@ ContactArc contactArc(const Cutter& cutter, double sinPsi, double cosPsi) {
   constexpr double kAngleTol = 1e-12;  // rad
   switch (cutter.type) {
     case CutterType::Ball:
-      return {true, cutter.radius, 0.0, {}};
+      return {true, cutter.radius, 0.0, cutter.radius, {}};
     case CutterType::Bull:
-      if (sinPsi > 0) return {true, cutter.cornerRadius, cutter.bottomRadius(), {}};
+      if (sinPsi > 0)
+        return {true, cutter.cornerRadius, cutter.bottomRadius(), cutter.cornerRadius, {}};
       arc.reason = "the untilted bull touches the plane along its flat bottom";
       return arc;
     case CutterType::Flat:
@@ -58,7 +53,7 @@ ContactArc contactArc(const Cutter& cutter, double sinPsi, double cosPsi) {
       const double a0 = std::atan2(seg.s0 - seg.centreS, seg.rho0 - seg.centreRho);
       const double a1 = std::atan2(seg.s1 - seg.centreS, seg.rho1 - seg.centreRho);
       if (target > a0 + kAngleTol && target < a1 - kAngleTol)
-        return {true, seg.arcRadius, seg.centreRho, {}};
+        return {true, seg.arcRadius, seg.centreRho, seg.centreS, {}};
       if (target >= a0 - kAngleTol && target <= a1 + kAngleTol) {
         arc.reason = "the contact lies where an arc meets the next segment of the profile";
         return arc;
@@ -74,8 +69,6 @@ ContactArc contactArc(const Cutter& cutter, double sinPsi, double cosPsi) {
   arc.reason = "the contact is a corner of the profile, a point of infinite curvature";
   return arc;
 }
-
-}  // namespace
 
 ProcedureResult effectiveRadiusAtContact(const Cutter& cutter, double leadDeg, double tiltDeg) {
   if (!std::isfinite(leadDeg) || !std::isfinite(tiltDeg) || std::fabs(leadDeg) >= 90 ||

@@ -30,10 +30,23 @@
 // the scallop must stay on the contact arc.
 #pragma once
 
+#include <string>
+
 #include "analysis/path_interval.h"
 #include "sweep/cutter.h"
 
 namespace scallop {
+
+// The arc of the profile on which the cutter touches the plane z = 0 when its axis
+// leans psi from the vertical (sinPsi >= 0): its radius and its centre (rho, s) in the
+// meridian half-plane, mm (rho < 0: across the axis); not found (with the reason) when
+// the contact is a corner, a line or a ring.
+struct ContactArc {
+  bool found = false;
+  double radius = 0, centreRho = 0, centreS = 0;
+  std::string reason;  // when not found
+};
+ContactArc contactArc(const Cutter& cutter, double sinPsi, double cosPsi);
 
 // R_eff at the contact of `cutter` inclined by leadTiltAxis(+x, lead, tilt), mm; not
 // applicable (with the reason) when the contact is a corner, a line or a ring.

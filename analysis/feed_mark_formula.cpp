@@ -2,8 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <sstream>
+#include <string>
+#include <vector>
 
+#include "analysis/contact_curvature.h"
+#include "analysis/feed_marks.h"
+#include "analysis/tooth_mark_envelope.h"
 #include "base/constants.h"
 
 namespace scallop {
@@ -27,7 +33,33 @@ FeedMarkPrediction notCovered(const std::string& reason) {
   return p;
 }
 
+// Runout, unequal pitch or a tooth offset: anything that makes the teeth's marks differ.
+bool hasToothErrors(const CutterTeeth& teeth) {
+  if (teeth.runout != 0 || !teeth.toothAnglesDeg.empty()) return true;
+  for (const ToothOffset& o : teeth.toothOffsets)
+    if (o.radial != 0 || o.axial != 0) return true;
+  return false;
+}
+
 }  // namespace
+
+std::vector<ToothMark> toothMarks(const CutterTeeth& teeth, double cutterRadiusMm,
+                                  double contactHeightMm, double leadRad, double fz) {
+  const double s = std::sin(leadRad), c = std::cos(leadRad);
+  const double period = teeth.flutes * fz;
+  const double helixTurn = contactHeightMm * std::tan(teeth.helixDeg * kPi / 180) / cutterRadiusMm;
+  std::vector<ToothMark> marks;
+  for (int k = 0; k < teeth.flutes; ++k) {
+    const double psi = teeth.toothAngle(k);
+    const ToothOffset o = teeth.toothOffset(k);
+    // The tooth's edge at the contact, moved along r (away from the axis) and along -a.
+    const double along =
+        teeth.runout * std::cos(teeth.runoutPhaseDeg * kPi / 180 - psi - helixTurn) + o.radial;
+    const double sigma = along * c - o.axial * s;
+    marks.push_back({period * (psi / (2 * kPi)) + sigma, along * s + o.axial * c});
+  }
+  return marks;
+}
 
 FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double tiltDeg,
                                     double fz) {
@@ -38,44 +70,44 @@ FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double
         "needs a lead 0 < |lead| < 90 deg: without one the contact is at the tip, "
         "on the axis, where every tooth passes");
   if (tiltDeg != 0) return notCovered("derived for lead alone (tilt 0)");
-  const double rho = cutter.type == CutterType::Ball ? cutter.radius : cutter.cornerRadius;
+  const double lambda = std::fabs(leadDeg) * kPi / 180;
+  const ContactArc arc = contactArc(cutter, std::sin(lambda), std::cos(lambda));
+  if (!arc.found) return notCovered("the contact is not on an arc of the profile: " + arc.reason);
+  const double rho = arc.radius;
   if (!(fz > 0) || !(fz < 2 * rho)) {
     std::ostringstream msg;
     msg << "needs 0 < fz < 2 rho_f = " << 2 * rho << " mm";
     return notCovered(msg.str());
   }
   const CutterTeeth& teeth = cutter.teeth;
+  const double period = teeth.flutes * fz;
+  const double contactHeight = arc.centreS - rho * std::cos(lambda);
+  const MarkEnvelope envelope =
+      markEnvelope(toothMarks(teeth, cutter.radius, contactHeight, lambda, fz), period, rho);
+  if (!envelope.valid)
+    return notCovered("two teeth's marks lie 2 rho_f or more apart: they are not arcs of rho_f");
   FeedMarkPrediction p;
   p.applicable = true;
   p.profileRadiusMm = rho;
-  p.spacingMm = fz;
   p.hasRunoutThreshold = teeth.flutes == 2;
   if (p.hasRunoutThreshold) p.runoutThresholdMm = runoutThreshold(rho, leadDeg, fz);
-  if (teeth.runout == 0) {
+  p.cuttingTeeth = envelope.cuttingTeeth;
+  p.valleyDepthsMm = envelope.valleyDepthsMm;
+  p.heightMm = envelope.peakToValleyMm;
+  p.heightParabolaMm = envelope.peakToValleyParabolaMm;
+  const auto valleys = std::count_if(
+      p.valleyDepthsMm.begin(), p.valleyDepthsMm.end(),
+      [&](double depth) { return depth >= kFeedMarkHysteresis * envelope.peakToValleyMm; });
+  p.spacingMm = period / double(std::max<std::ptrdiff_t>(valleys, 1));
+  const int cutting = int(envelope.cuttingTeeth.size());
+  if (!hasToothErrors(teeth))
     p.regime = "no runout";
-  } else {
-    const double phase = std::fmod(std::fabs(teeth.runoutPhaseDeg), 180.0);
-    if (teeth.flutes != 2 || phase != 0 || teeth.helixDeg != 0)
-      return notCovered("runout is derived for 2 flutes, runout phase 0 or 180 deg, no helix");
-    const double lambda = std::fabs(leadDeg) * kPi / 180;
-    const double dz = 2 * teeth.runout * std::sin(lambda);
-    const double sigma = 2 * teeth.runout * std::cos(lambda);
-    if (teeth.runout >= p.runoutThresholdMm) {
-      p.regime = "one tooth cuts";
-      p.spacingMm = 2 * fz;
-    } else {
-      p.regime = "both teeth cut";
-      double top = 0;
-      for (const double d : {fz - sigma, fz + sigma}) {
-        const double x = (2 * rho * dz + d * d) / (2 * d);
-        top = std::max(top, x * x / (2 * rho));
-      }
-      p.heightMm = p.heightParabolaMm = top;
-      return p;
-    }
-  }
-  p.heightMm = circularMarkHeight(rho, p.spacingMm);
-  p.heightParabolaMm = p.spacingMm * p.spacingMm / (8 * rho);
+  else if (cutting == 1)
+    p.regime = "one tooth cuts";
+  else if (cutting == teeth.flutes)
+    p.regime = teeth.flutes == 2 ? "both teeth cut" : "all teeth cut";
+  else
+    p.regime = std::to_string(cutting) + " of " + std::to_string(teeth.flutes) + " teeth cut";
   return p;
 }
 

@@ -7,8 +7,11 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "base/constants.h"
+#include "sweep/cutter_shapes.h"
 
 namespace scallop {
 namespace {
@@ -79,21 +82,100 @@ TEST(FeedMarkFormula, BallAndBullWithLead) {
 TEST(FeedMarkFormula, RunoutRegimesMeetAtTheThreshold) {
   const Cutter ball = Cutter::make(CutterType::Ball, 3);
   const double fz = 0.1, star = runoutThreshold(3, 15, fz);
+  // The parabolas: at rho* the higher tooth's arc passes through the lower tooth's cusp,
+  // so both sides of it give the parabolic cusp of arcs 2 fz apart, (2 fz)^2 / (8 rho).
   const FeedMarkPrediction below = predictFeedMarks(withRunout(ball, star * (1 - 1e-9)), 15, 0, fz);
   const FeedMarkPrediction above = predictFeedMarks(withRunout(ball, star * (1 + 1e-9)), 15, 0, fz);
-  EXPECT_EQ(below.regime, "both teeth cut");
-  EXPECT_EQ(below.spacingMm, fz);
-  EXPECT_EQ(above.regime, "one tooth cuts");
-  EXPECT_EQ(above.spacingMm, 2 * fz);
-  EXPECT_EQ(above.heightMm, circularMarkHeight(3, 2 * fz));
-  // At the threshold the higher tooth's arc passes through the lower tooth's cusp:
-  // both regimes give the parabolic cusp of arcs 2 fz apart, (2 fz)^2 / (8 rho).
-  EXPECT_NEAR(below.heightMm, 4 * fz * fz / 24, 1e-11);
-  EXPECT_NEAR(above.heightParabolaMm, 4 * fz * fz / 24, 1e-18);
-  // Without runout the parabolic marks are fz^2 / (8 rho); a small runout deepens them.
+  EXPECT_NEAR(below.heightParabolaMm, 4 * fz * fz / 24, 1e-11);
+  EXPECT_NEAR(above.heightParabolaMm, 4 * fz * fz / 24, 1e-11);
+  // The circles: their threshold lies near rho* (the parabola is their osculating
+  // approximation, fz^2 / rho_f^2 ~ 1e-3 apart here); found by bisection on the regime,
+  // the heights meet there at the circles' cusp of arcs 2 fz apart.
+  double lo = 0.5 * star, hi = 2 * star;
+  ASSERT_EQ(predictFeedMarks(withRunout(ball, lo), 15, 0, fz).regime, "both teeth cut");
+  ASSERT_EQ(predictFeedMarks(withRunout(ball, hi), 15, 0, fz).regime, "one tooth cuts");
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (predictFeedMarks(withRunout(ball, mid), 15, 0, fz).regime == "both teeth cut" ? lo : hi) = mid;
+  }
+  EXPECT_NEAR(lo / star, 1, 1e-2);
+  const FeedMarkPrediction both = predictFeedMarks(withRunout(ball, lo), 15, 0, fz);
+  const FeedMarkPrediction one = predictFeedMarks(withRunout(ball, hi), 15, 0, fz);
+  // At the threshold the higher tooth's valley closes: the marks it leaves just below
+  // are too shallow to count (spacingMm counts valleys as measureFeedMarks does), well
+  // below it they are fz apart.
+  EXPECT_EQ(both.cuttingTeeth.size(), 2u);
+  EXPECT_LT(both.valleyDepthsMm[1], 1e-12);
+  EXPECT_EQ(both.spacingMm, 2 * fz);
+  EXPECT_EQ(predictFeedMarks(withRunout(ball, 0.5 * star), 15, 0, fz).spacingMm, fz);
+  EXPECT_EQ(one.spacingMm, 2 * fz);
+  EXPECT_EQ(one.cuttingTeeth, std::vector<int>{0});  // phase 0 pushes tooth 0 out
+  EXPECT_NEAR(both.heightMm, circularMarkHeight(3, 2 * fz), 1e-12);
+  EXPECT_NEAR(one.heightMm, circularMarkHeight(3, 2 * fz), 1e-15);
+  // Without runout the marks are the circle of chord fz; a small runout deepens them.
   const FeedMarkPrediction small = predictFeedMarks(withRunout(ball, 1e-4), 15, 0, fz);
-  EXPECT_GT(small.heightMm, fz * fz / 24);
-  EXPECT_LT(small.heightMm, below.heightMm);
+  EXPECT_GT(small.heightMm, circularMarkHeight(3, fz));
+  EXPECT_LT(small.heightMm, both.heightMm);
+}
+
+// The arcs' positions and depths against the geometry they come from: tooth k's edge
+// point at the contact, moved by its offsets and the runout's share, for teeth of any
+// pitch, helix and runout phase (the formula is written from the move's frame, this
+// from the cutter's: r and a explicitly).
+TEST(FeedMarkFormula, ToothMarksAreTheEdgesMovedByTheirErrors) {
+  CutterTeeth teeth = CutterTeeth::make(3, 20, 0.002, 75, 3);
+  teeth.toothAnglesDeg = {0, 110, 230};
+  teeth.toothOffsets = {{0.001, -0.0005}, {0, 0.0008}, {-0.0004, 0}};
+  const double lead = 25 * kPi / 180, fz = 0.07, hc = 3 * (1 - std::cos(lead));
+  const std::vector<ToothMark> marks = toothMarks(teeth, 3, hc, lead, fz);
+  ASSERT_EQ(marks.size(), 3u);
+  const double rx = std::cos(lead), rz = -std::sin(lead), ax = std::sin(lead), az = std::cos(lead);
+  for (int k = 0; k < 3; ++k) {
+    const double psi = teeth.toothAnglesDeg[size_t(k)] * kPi / 180;
+    // At the moment tooth k's edge at hc faces the contact, the runout vector's angle
+    // from the contact direction is (runout phase) - (psi_k + hc tan(beta) / R).
+    const double rel = 75 * kPi / 180 - (psi + hc * std::tan(20 * kPi / 180) / 3);
+    const double q = 0.002 * std::cos(rel) + teeth.toothOffsets[size_t(k)].radial;
+    const double da = teeth.toothOffsets[size_t(k)].axial;
+    const double x = q * rx - da * ax, z = q * rz - da * az;  // the edge's displacement
+    EXPECT_NEAR(marks[size_t(k)].positionMm, 3 * fz * psi / (2 * kPi) + x, 1e-15) << k;
+    EXPECT_NEAR(marks[size_t(k)].lowerMm, -z, 1e-15) << k;
+  }
+}
+
+// The envelope against a dense sampling of the lowest arc.
+TEST(FeedMarkFormula, EnvelopeOfArcsAgainstSampling) {
+  const double rho = 2, period = 0.3;
+  const std::vector<ToothMark> marks = {{0.0, 0.0}, {0.09, 0.0021}, {0.21, -0.0007}};
+  const MarkEnvelope e = markEnvelope(marks, period, rho);
+  ASSERT_TRUE(e.valid);
+  double top = -HUGE_VAL, bottom = HUGE_VAL;
+  std::vector<bool> seen(3, false);
+  const int n = 300000;
+  for (int i = 0; i < n; ++i) {
+    const double x = period * i / n;
+    double z = HUGE_VAL;
+    int who = -1;
+    for (int k = 0; k < 3; ++k)
+      for (int copy = -1; copy <= 1; ++copy) {
+        const double u = x - marks[size_t(k)].positionMm - copy * period;
+        const double v = -marks[size_t(k)].lowerMm + rho - std::sqrt(rho * rho - u * u);
+        if (v < z) z = v, who = k;
+      }
+    seen[size_t(who)] = true;
+    top = std::max(top, z), bottom = std::min(bottom, z);
+  }
+  // Sampling misses a cusp by at most its slope (< 0.2 / rho) times half a step.
+  EXPECT_LE(top - bottom, e.peakToValleyMm + 1e-15);
+  EXPECT_GE(top - bottom, e.peakToValleyMm - 0.1 * period / n);
+  std::vector<int> cutting;
+  for (int k = 0; k < 3; ++k)
+    if (seen[size_t(k)]) cutting.push_back(k);
+  EXPECT_EQ(e.cuttingTeeth, cutting);
+  // Here tooth 1 lies 2.1 um deep between the others: the three cut.
+  EXPECT_EQ(cutting.size(), 3u);
+  // Arcs 2 rho apart do not meet.
+  EXPECT_FALSE(markEnvelope({{0, 0}}, 2 * rho, rho).valid);
 }
 
 TEST(FeedMarkFormula, WhereItDoesNotApply) {
@@ -102,11 +184,21 @@ TEST(FeedMarkFormula, WhereItDoesNotApply) {
   EXPECT_FALSE(predictFeedMarks(ball, 0, 0, 0.1).applicable);
   EXPECT_FALSE(predictFeedMarks(ball, 15, 5, 0.1).applicable);
   EXPECT_FALSE(predictFeedMarks(ball, 15, 0, 6).applicable);  // fz >= 2 rho_f
-  EXPECT_FALSE(predictFeedMarks(withRunout(ball, 1e-3, 3), 15, 0, 0.1).applicable);
+  // A leaning bull touches with its corner arc; a cone with its sharp point (or, at its
+  // half-angle's complement, along its flank): no arc.
+  EXPECT_TRUE(predictFeedMarks(Cutter::make(CutterType::Bull, 5, 1), 3, 0, 0.1).applicable);
+  ConeShape vbit;
+  vbit.angleDeg = 90, vbit.diameter = 6, vbit.fluteLength = 10;
+  const Cutter cone = cutterOfChain(CutterType::Cone, coneChain(vbit, "tool"), "tool");
+  for (const double lead : {15.0, 45.0}) {
+    const FeedMarkPrediction p = predictFeedMarks(cone, lead, 0, 0.1);
+    EXPECT_FALSE(p.applicable) << lead;
+    EXPECT_NE(p.reason.find("not on an arc"), std::string::npos) << p.reason;
+  }
+  // Runout of any phase and flute count is covered now.
+  EXPECT_TRUE(predictFeedMarks(withRunout(ball, 1e-3, 3), 15, 0, 0.1).applicable);
   Cutter phased = withRunout(ball, 1e-3);
   phased.teeth.runoutPhaseDeg = 90;
-  EXPECT_FALSE(predictFeedMarks(phased, 15, 0, 0.1).applicable);
-  phased.teeth.runoutPhaseDeg = 180;
   EXPECT_TRUE(predictFeedMarks(phased, 15, 0, 0.1).applicable);
   for (const auto& p : {predictFeedMarks(ball, 0, 0, 0.1), predictFeedMarks(ball, 15, 5, 0.1)})
     EXPECT_FALSE(p.reason.empty());

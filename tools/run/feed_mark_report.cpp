@@ -10,6 +10,7 @@
 #include "analysis/feed_mark_formula.h"
 #include "analysis/feed_marks.h"
 #include "analysis/profile_metrology.h"
+#include "base/constants.h"
 #include "tools/io/job.h"
 
 namespace scallop {
@@ -147,6 +148,77 @@ json centreLine(const Job& job, const GridSpec& g) {
   return line;
 }
 
+// A prediction's entry in the plan: "predicted", or "predicted_reason" saying why not.
+void addPrediction(const FeedMarkPrediction& p, json& plan) {
+  if (!p.applicable) {
+    plan["predicted_reason"] = p.reason;
+    return;
+  }
+  std::vector<double> valleyDepthsUm;
+  for (const double d : p.valleyDepthsMm) valleyDepthsUm.push_back(d * 1e3);
+  json j = {{"formula",
+             "the lower envelope of the teeth's arcs of radius rho_f; without tooth errors "
+             "h = rho_f - sqrt(rho_f^2 - s^2 / 4) ~ s^2 / (8 rho_f), s the spacing"},
+            {"profile_radius_mm", p.profileRadiusMm},
+            {"spacing_mm", p.spacingMm},
+            {"peak_to_valley_um", p.heightMm * 1e3},
+            {"peak_to_valley_parabola_um", p.heightParabolaMm * 1e3},
+            {"cutting_teeth", p.cuttingTeeth},
+            {"valley_depths_um", valleyDepthsUm},
+            {"regime", p.regime}};
+  if (p.hasRunoutThreshold) j["runout_threshold_mm"] = p.runoutThresholdMm;
+  plan["predicted"] = j;
+}
+
+// The closed form for a raster (analysis/feed_mark_formula.h).
+void addRasterPrediction(const Job& job, json& plan) {
+  if (!job.isRaster) {
+    plan["predicted_reason"] =
+        "the closed form of the centre line is recorded for raster jobs; see each pass's";
+    return;
+  }
+  addPrediction(predictFeedMarks(job.cutter, job.raster.leadDeg, job.raster.tiltDeg,
+                                 job.cutting.feedPerTooth),
+                plan);
+}
+
+// The closed form for the pass of moves first..last: a level straight run with one
+// axis, feed per tooth and cutter, its lead and tilt measured against its own feed
+// direction; otherwise the reason.
+FeedMarkPrediction passPrediction(const Job& job, size_t first, size_t last) {
+  const std::vector<Move>& moves = job.path.moves;
+  const Move& m0 = moves[first];
+  const Vec3 axis = m0.from.axis;
+  const double fz = m0.feedPerTooth > 0 ? m0.feedPerTooth : job.cutting.feedPerTooth;
+  FeedMarkPrediction none;
+  for (size_t k = first; k <= last; ++k) {
+    const Move& m = moves[k];
+    if (m.from.tip.z != m0.from.tip.z || m.to.tip.z != m0.from.tip.z) {
+      none.reason =
+          "the pass is not level (its tip's z changes): the closed form is for a "
+          "level pass";
+      return none;
+    }
+    if (!(m.from.axis == axis) || !(m.to.axis == axis) ||
+        (m.rotary > 0 && !job.path.rotary[m.rotary - 1].tcp)) {
+      none.reason = "the tool axis turns along the pass";
+      return none;
+    }
+    if ((m.feedPerTooth > 0 ? m.feedPerTooth : job.cutting.feedPerTooth) != fz) {
+      none.reason = "the feed per tooth changes along the pass";
+      return none;
+    }
+  }
+  const Cutter& cutter = m0.tool < job.path.cutters.size() ? job.path.cutters[m0.tool] : job.cutter;
+  const double dx = moves[last].to.tip.x - m0.from.tip.x, dy = moves[last].to.tip.y - m0.from.tip.y;
+  const double length = std::hypot(dx, dy);
+  const double fx = dx / length, fy = dy / length;  // the feed; across it (-fy, fx)
+  const double along = axis.x * fx + axis.y * fy, across = -axis.x * fy + axis.y * fx;
+  constexpr double kDeg = 180 / kPi;
+  const double tiltDeg = std::asin(std::clamp(across, -1.0, 1.0)) * kDeg;
+  const double leadDeg = std::atan2(along, axis.z) * kDeg;
+  return predictFeedMarks(cutter, leadDeg, std::fabs(across) <= 1e-12 ? 0.0 : tiltDeg, fz);
+}
 // Every straight cutting run of the path (feed_mark_report.h "passes"), the first
 // kMaxPasses of them listed.
 constexpr size_t kMaxPasses = 64;
@@ -162,36 +234,16 @@ void addPasses(const Job& job, const GridSpec& g, json& plan) {
     json pass =
         runLine(job, g, first, last, first,
                 "the pass of moves " + std::to_string(first + 1) + ".." + std::to_string(last + 1));
-    if (pass.contains("line")) ++crossing;
-    if (passes.size() < kMaxPasses) passes.push_back(pass);
+    const bool listed = passes.size() < kMaxPasses;
+    if (pass.contains("line")) {
+      ++crossing;
+      if (listed) addPrediction(passPrediction(job, first, last), pass);
+    }
+    if (listed) passes.push_back(pass);
   }
   plan["passes"] = passes;
   plan["pass_count"] = runs;
   plan["passes_crossing_the_map"] = crossing;
-}
-
-// The closed form for a raster (analysis/feed_mark_formula.h).
-void addPrediction(const Job& job, json& plan) {
-  if (!job.isRaster) {
-    plan["predicted_reason"] =
-        "the closed form is recorded for raster jobs (straight passes "
-        "at a known lead on a level floor)";
-    return;
-  }
-  const FeedMarkPrediction p = predictFeedMarks(job.cutter, job.raster.leadDeg, job.raster.tiltDeg,
-                                                job.cutting.feedPerTooth);
-  if (!p.applicable) {
-    plan["predicted_reason"] = p.reason;
-    return;
-  }
-  json j = {{"formula", "h = rho_f - sqrt(rho_f^2 - s^2 / 4) ~ s^2 / (8 rho_f), s the spacing"},
-            {"profile_radius_mm", p.profileRadiusMm},
-            {"spacing_mm", p.spacingMm},
-            {"peak_to_valley_um", p.heightMm * 1e3},
-            {"peak_to_valley_parabola_um", p.heightParabolaMm * 1e3},
-            {"regime", p.regime}};
-  if (p.hasRunoutThreshold) j["runout_threshold_mm"] = p.runoutThresholdMm;
-  plan["predicted"] = j;
 }
 
 }  // namespace
@@ -200,7 +252,7 @@ json feedMarkPlan(const Job& job, const GridSpec& grid) {
   if (!job.cutting.teeth()) return nullptr;
   json plan = centreLine(job, grid);
   addPasses(job, grid, plan);
-  addPrediction(job, plan);
+  addRasterPrediction(job, plan);
   return plan;
 }
 

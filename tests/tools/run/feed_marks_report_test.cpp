@@ -136,6 +136,55 @@ TEST_F(FeedMarksReport, EveryPassOfAPathIsMeasured) {
       << passes[2];
 }
 
+// A pass of a path file gets the closed form too, measured against its own feed and
+// axis: here three teeth of unequal pitch with offsets, runout at a phase of 60 deg and
+// a 30 deg helix (the lower envelope of their arcs, analysis/feed_mark_formula.h),
+// against the teeth model's exact heights.
+TEST_F(FeedMarksReport, APassOfAPathMeetsTheClosedFormWithToothErrors) {
+  const std::string job = R"({"tool": {"type": "ball", "radius": 3, "flutes": 3,
+        "helix_deg": 30, "runout_mm": 0.001, "runout_phase_deg": 60,
+        "tooth_angles_deg": [0, 100, 230],
+        "tooth_offsets": [[0, 0], [0, 0.0004], [0.0015, 0]]},
+      "cutting": {"model": "teeth"}, "machine": {"kinematics": "xyzbc-trt"},
+      "stock": {"min": [0, -0.02, -2], "max": [0.8, 0.02, 0]}, "grid": {"spacing": 0.002},
+      "path": {"file": "p.nc"}})";
+  write("p.nc", "G43.4\nS6000 M3\nG0 X-4 Y0 Z1 B-15 C0\nG1 Z-0.1 F1200\nX5\n");
+  const json f = simulate(job).at("feed_marks");
+  const json& pass = f.at("passes").at(0);
+  ASSERT_TRUE(pass.contains("predicted")) << pass;
+  const json& predicted = pass["predicted"];
+  Cutter ball = Cutter::make(CutterType::Ball, 3);
+  ball.teeth = CutterTeeth::make(3, 30, 0.001, 60, 3);
+  ball.teeth.toothAnglesDeg = {0, 100, 230};
+  ball.teeth.toothOffsets = {{0, 0}, {0, 0.0004}, {0.0015, 0}};
+  const double fz = 1200.0 / (6000 * 3);
+  const FeedMarkPrediction p = predictFeedMarks(ball, 15, 0, fz);
+  ASSERT_TRUE(p.applicable) << p.reason;
+  EXPECT_NEAR(predicted["peak_to_valley_um"].get<double>(), p.heightMm * 1e3, 1e-9);
+  EXPECT_EQ(predicted["regime"], p.regime);
+  EXPECT_EQ(predicted["cutting_teeth"], json(p.cuttingTeeth));
+  // Measured on the grid: the highest samples lie within half a step of the cusps, below
+  // them by at most the arcs' slope there (< half the period / rho_f) times the step.
+  const double pv = pass.at("peak_to_valley_um").get<double>() * 1e-3;
+  const double slope = 1.5 * fz / 3;
+  EXPECT_LE(pv, p.heightMm + 2e-9) << pass;
+  EXPECT_GE(pv, p.heightMm - slope * 0.001 - 2e-9) << pass;
+  EXPECT_NEAR(pass.at("mean_spacing_mm").get<double>(), p.spacingMm, 0.01 * fz) << pass;
+}
+
+// Where the closed form does not apply to a pass, the pass says why and is measured.
+TEST_F(FeedMarksReport, APassWithoutAClosedFormSaysWhy) {
+  const std::string job = R"({"tool": {"type": "ball", "radius": 3},
+      "cutting": {"model": "teeth"},
+      "stock": {"min": [0, -0.02, -2], "max": [0.8, 0.02, 0]}, "grid": {"spacing": 0.004},
+      "path": {"file": "p.nc"}})";
+  write("p.nc", "S6000 M3\nG0 X-4 Y0 Z1\nG1 Z-0.1 F1200\nX5 Z-0.11\n");
+  const json pass = simulate(job).at("feed_marks").at("passes").at(0);
+  EXPECT_TRUE(pass.contains("peak_to_valley_um")) << pass;
+  EXPECT_NE(pass.at("predicted_reason").get<std::string>().find("not level"), std::string::npos)
+      << pass;
+}
+
 TEST_F(FeedMarksReport, BandsGiveTheWholeMapsSection) {
   const json whole = simulate(kJob).at("feed_marks");
   // 20 rows in bands of 3: the line (between rows 9 and 10) spans two bands.
