@@ -172,6 +172,26 @@ TEST_F(FeedMarksReport, APassOfAPathMeetsTheClosedFormWithToothErrors) {
   EXPECT_NEAR(pass.at("mean_spacing_mm").get<double>(), p.spacingMm, 0.01 * fz) << pass;
 }
 
+// Which way a tooth's offset moves its mark matters once the pitch is unequal: tooth 1
+// at 140 deg, 2 um further out, sits sigma = 2 cos(15 deg) um further along the feed
+// (docs/teeth.md), making the gaps 0.1056 and 0.1611 mm; moved the other way they
+// would be 0.1018 and 0.1649 mm and the marks 52 nm higher, more than the sampling's
+// slack (the arcs' slope at the cusps, < 0.055, times half a 1 um step).
+TEST_F(FeedMarksReport, AnOffsetToothsMarkMovesAlongTheFeed) {
+  const std::string job = R"({"tool": {"type": "ball", "radius": 3, "flutes": 2,
+        "tooth_angles_deg": [0, 140], "tooth_offsets": [[0, 0], [0.002, 0]]},
+      "cutting": {"model": "teeth"}, "machine": {"kinematics": "xyzbc-trt"},
+      "stock": {"min": [0, -0.004, -2], "max": [0.6, 0.004, 0]}, "grid": {"spacing": 0.001},
+      "path": {"file": "p.nc"}})";
+  write("p.nc", "G43.4\nS6000 M3\nG0 X-4 Y0 Z1 B-15 C0\nG1 Z-0.1 F1600\nX5\n");
+  const json pass = simulate(job).at("feed_marks").at("passes").at(0);
+  const double predicted = pass.at("predicted").at("peak_to_valley_um").get<double>() * 1e-3;
+  const double pv = pass.at("peak_to_valley_um").get<double>() * 1e-3;
+  EXPECT_LE(pv, predicted + 2e-9) << pass;
+  EXPECT_GE(pv, predicted - 0.055 * 0.0005 - 2e-9) << pass;
+  EXPECT_EQ(pass["predicted"]["regime"], "both teeth cut");
+}
+
 // Where the closed form does not apply to a pass, the pass says why and is measured.
 TEST_F(FeedMarksReport, APassWithoutAClosedFormSaysWhy) {
   const std::string job = R"({"tool": {"type": "ball", "radius": 3},
