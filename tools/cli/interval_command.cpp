@@ -40,12 +40,14 @@ void printFeedMarks(const IntervalComparison& c) {
     std::printf("  not applicable: %s\n", f.reason.c_str());
     return;
   }
-  std::printf("  rho_f = %g mm (%s), marks %g mm apart (%s)\n", f.profileRadiusMm,
-              c.cutter.type == CutterType::Ball ? "the ball's R" : "the corner radius r",
-              f.spacingMm, f.regime.c_str());
+  const char* arc = c.cutter.type == CutterType::Ball   ? "the ball's R"
+                    : c.cutter.type == CutterType::Bull ? "the corner radius r"
+                                                        : "the profile's arc at the contact";
+  std::printf("  rho_f = %g mm (%s), marks %g mm apart (%s)\n", f.profileRadiusMm, arc, f.spacingMm,
+              f.regime.c_str());
   std::printf(
-      "  h_f = %.6f um (circles: rho_f - sqrt(rho_f^2 - s^2/4)), %.6f um (s^2 / (8 "
-      "rho_f))\n",
+      "  h_f = %.6f um (the teeth's arcs as circles; without runout rho_f - sqrt(rho_f^2 - "
+      "s^2/4)), %.6f um (as parabolas; s^2 / (8 rho_f))\n",
       f.heightMm * 1e3, f.heightParabolaMm * 1e3);
   if (f.hasRunoutThreshold)
     std::printf(
