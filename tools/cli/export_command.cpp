@@ -76,14 +76,15 @@ int runExport(const ExportArgs& args) {
     std::fprintf(stderr, "scallop export: error: %s\n", usage.c_str());
     return 2;
   }
-  const ZMap map = readHeightFile(args.file);
+  std::string frame;
+  const ZMap map = readHeightFile(args.file, &frame);
   if (args.hillshade) return writeHillshade(args, map);
   const std::string title = "scallop height map from " + args.file;
   if (ext == ".csv")
     exportProfileCsv(map, args.profile, args.stepMm, args.cutoffMm, args.to, "--profile",
                      "--cutoff");
   else
-    exportHeightMap(map, args.to, title);
+    exportHeightMap(map, args.to, title, frame);
   std::fprintf(stderr, "scallop: wrote %s\n", args.to.c_str());
   return 0;
 }

@@ -19,17 +19,17 @@
 
 namespace scallop {
 
-ZMap readHeightFile(const std::string& path) {
+ZMap readHeightFile(const std::string& path, std::string* frame) {
   const std::string ext = lowerExtension(path);
   if (!std::filesystem::exists(path)) throw InputError(path, "no such file");
-  if (ext == ".gsf") return readHeightsGsf(path);
-  if (ext == ".exr") return readHeightsExr(path);
+  if (ext == ".gsf") return readHeightsGsf(path, frame);
+  if (ext == ".exr") return readHeightsExr(path, frame);
   throw InputError(path,
                    "expected a height map written by scallop: a Gwyddion Simple Field "
                    "(.gsf) or an OpenEXR (.exr) file");
 }
 
-void writeHeights16(const ZMap& map, const std::string& path) {
+void writeHeights16(const ZMap& map, const std::string& path, const std::string& frame) {
   const std::string ext = lowerExtension(path);
   const char* format = ext == ".png" ? "png" : (ext == ".tif" || ext == ".tiff") ? "tiff" : nullptr;
   if (!format) throw InputError(path, "expected a .png, .tif or .tiff file name");
@@ -58,9 +58,11 @@ void writeHeights16(const ZMap& map, const std::string& path) {
   spec.attribute("ImageDescription",
                  fmt::format("scallop height map: z_mm = z_offset_mm + z_scale_mm * value; "
                              "z_offset_mm = {}; z_scale_mm = {}; {} x {} cells of {} mm, "
-                             "first cell centre at ({}, {}) mm; row 0 is the largest y{}",
+                             "first cell centre at ({}, {}) mm; row 0 is the largest y{}{}",
                              zMin, scale, g.nx, g.ny, g.spacing, g.cellCentreX(0),
-                             g.cellCentreY(g.ny - 1), hasVoid ? "; value 0: no material" : ""));
+                             g.cellCentreY(g.ny - 1), hasVoid ? "; value 0: no material" : "",
+                             frame.empty() ? "" : "; frame: " + frame));
+  if (!frame.empty()) spec.attribute("scallop:frame", frame);
   spec.attribute("scallop:z_offset_mm", fmt::format("{}", zMin));
   spec.attribute("scallop:z_scale_mm", fmt::format("{}", scale));
   spec.attribute("scallop:origin_x", fmt::format("{}", g.originX));

@@ -17,10 +17,13 @@
 
 namespace scallop {
 
-ZMap readHeightFile(const std::string& path);
+// `frame`, when given, receives the frame the heights are in (height_images.h).
+ZMap readHeightFile(const std::string& path, std::string* frame = nullptr);
 
-// Format from the extension: ".png" or ".tif"/".tiff".
-void writeHeights16(const ZMap& map, const std::string& path);
+// Format from the extension: ".png" or ".tif"/".tiff". A map in a frame
+// (GridFrame::describe()) says so in ImageDescription and, in PNG, the text chunk
+// "scallop:frame".
+void writeHeights16(const ZMap& map, const std::string& path, const std::string& frame = "");
 
 void writeProfileCsv(const Profile& profile, const RoughnessStats* roughness,
                      const std::string& path);

@@ -197,7 +197,7 @@ void writeHeightsExr(const ZMap& map, const std::string& path, const std::string
   });
 }
 
-ZMap readHeightsExr(const std::string& path) {
+ZMap readHeightsExr(const std::string& path, std::string* frame) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw InputError(path, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
@@ -214,6 +214,7 @@ ZMap readHeightsExr(const std::string& path) {
                                  kOriginX, kOriginY, kSpacing));
   if (!(g.spacing > 0) || !std::isfinite(g.spacing))
     throw InputError(path, fmt::format("{} must be a positive number", kSpacing));
+  if (frame) *frame = spec.get_string_attribute("scallop:frame");
 
   std::vector<float> pixels(size_t(g.cells()));
   if (!in->read_image(0, 0, channel, channel + 1, OIIO::TypeDesc::FLOAT, pixels.data()))
@@ -246,7 +247,7 @@ void writeHeightsGsf(const ZMap& map, const std::string& path, const std::string
   });
 }
 
-ZMap readHeightsGsf(const std::string& path) {
+ZMap readHeightsGsf(const std::string& path, std::string* frame) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open: " + std::string(std::strerror(errno)));
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
@@ -277,6 +278,7 @@ ZMap readHeightsGsf(const std::string& path) {
     keys[trim(line.substr(0, eq))] = trim(line.substr(eq + 1));
   }
 
+  if (frame) *frame = keys.count("ScallopFrame") ? keys["ScallopFrame"] : "";
   GridSpec g;
   const double xres = parseGsfNumber(path, keys, "XRes", -1);
   const double yres = parseGsfNumber(path, keys, "YRes", -1);

@@ -65,8 +65,10 @@ class HeightStreamWriter {
 // GSF with the same metadata). The GridSpec comes from the metadata: for GSF,
 // spacing = XReal / XRes (m -> mm) and origin = (XOffset, YOffset). Heights are
 // float32 in the files, so they round-trip to float precision only.
-// Throw InputError(path, ...) for unreadable or inconsistent files.
-ZMap readHeightsExr(const std::string& path);
-ZMap readHeightsGsf(const std::string& path);
+// Throw InputError(path, ...) for unreadable or inconsistent files. `frame`, when given,
+// receives the frame the heights are in (the EXR attribute scallop:frame, the GSF field
+// ScallopFrame; empty for a map seen from above).
+ZMap readHeightsExr(const std::string& path, std::string* frame = nullptr);
+ZMap readHeightsGsf(const std::string& path, std::string* frame = nullptr);
 
 }  // namespace scallop

@@ -27,16 +27,17 @@ ZMap cropped(const ZMap& map, const CellRegion& region) {
 
 }  // namespace
 
-void exportHeightMap(const ZMap& map, const std::string& path, const std::string& title) {
+void exportHeightMap(const ZMap& map, const std::string& path, const std::string& title,
+                     const std::string& frame) {
   const std::string ext = lowerExtension(path);
   if (ext == ".x3p") {
-    writeHeightsX3p(map, path, title);
+    writeHeightsX3p(map, path, frame.empty() ? title : title + "; heights in the frame: " + frame);
   } else if (ext == ".png" || ext == ".tif" || ext == ".tiff") {
-    writeHeights16(map, path);
+    writeHeights16(map, path, frame);
   } else if (ext == ".gsf") {
-    writeHeightsGsf(map, path, title);
+    writeHeightsGsf(map, path, title, frame);
   } else if (ext == ".exr") {
-    writeHeightsExr(map, path);
+    writeHeightsExr(map, path, frame);
   } else {
     throw InputError(path, "expected a file name ending in .x3p, .png, .tif, .tiff, .gsf or .exr");
   }

@@ -12,9 +12,12 @@
 namespace scallop {
 
 // Writes `map` to `path` in the format of its extension: .x3p (ISO 25178-72), .png/.tif/
-// .tiff (16-bit), .gsf (Gwyddion), .exr; `title` goes into the formats that carry one.
+// .tiff (16-bit), .gsf (Gwyddion), .exr; `title` goes into the formats that carry one,
+// and `frame` (GridFrame::describe(); empty: seen from above) into every one: GSF
+// ScallopFrame, EXR and PNG scallop:frame, PNG/TIFF ImageDescription, X3P's Comment.
 // InputError for another extension.
-void exportHeightMap(const ZMap& map, const std::string& path, const std::string& title);
+void exportHeightMap(const ZMap& map, const std::string& path, const std::string& title,
+                     const std::string& frame = "");
 
 // Writes the profile of `map` along `line` = {x0, y0, x1, y1} (mm), a sample every
 // `stepMm` (0: the grid spacing), as CSV; its roughness column (cutoff `cutoffMm`) is

@@ -7,6 +7,7 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <zip.h>
 
 #include <cmath>
 #include <cstring>
@@ -197,6 +198,36 @@ TEST_F(FrameRun, LinesThatMissTheStockAreNanInEveryHeightFileAndCounted) {
   ASSERT_TRUE(in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT16, levels.data()));
   for (size_t k = 0; k < levels.size(); ++k) EXPECT_EQ(levels[k] == 0, !inStock(k % 28)) << k;
   EXPECT_EQ(run("export " + path("out/heights.gsf") + " --to " + path("heights.x3p")).status, 0);
+
+  // Every export says which frame its heights are in (read back from the GSF and the
+  // EXR): the TIFF's and PNG's ImageDescription (and PNG's scallop:frame), X3P's Comment,
+  // a GSF or EXR written again.
+  const std::string frame = "origin (-2, 0, 0) mm";
+  EXPECT_NE(in->spec().get_string_attribute("ImageDescription").find("frame: " + frame),
+            std::string::npos);
+  ASSERT_EQ(run("export " + path("out/heights.exr") + " --to " + path("h.png")).status, 0);
+  auto png = OIIO::ImageInput::open((dir_ / "h.png").string());
+  ASSERT_TRUE(png);
+  EXPECT_NE(png->spec().get_string_attribute("scallop:frame").find(frame), std::string::npos);
+  ASSERT_EQ(run("export " + path("out/heights.exr") + " --to " + path("again.gsf")).status, 0);
+  EXPECT_NE(test::slurp(dir_ / "again.gsf").find("ScallopFrame = " + frame), std::string::npos);
+  ASSERT_EQ(run("export " + path("again.gsf") + " --to " + path("again.exr")).status, 0);
+  auto again = OIIO::ImageInput::open((dir_ / "again.exr").string());
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->spec().get_string_attribute("scallop:frame"),
+            exr->spec().get_string_attribute("scallop:frame"));
+  int error = 0;
+  zip_t* x3p = zip_open(path("heights.x3p").c_str(), ZIP_RDONLY, &error);
+  ASSERT_NE(x3p, nullptr);
+  zip_stat_t st;
+  ASSERT_EQ(zip_stat(x3p, "main.xml", 0, &st), 0);
+  std::string xml(size_t(st.size), '\0');
+  zip_file_t* entry = zip_fopen(x3p, "main.xml", 0);
+  ASSERT_NE(entry, nullptr);
+  EXPECT_EQ(zip_fread(entry, xml.data(), st.size), zip_int64_t(st.size));
+  zip_fclose(entry);
+  zip_close(x3p);
+  EXPECT_NE(xml.find("heights in the frame: " + frame), std::string::npos) << xml;
 }
 
 // Bands of a frame's map (void cells and all) are the in-memory map's bytes.
