@@ -24,6 +24,7 @@ DesignComparison compareWithDesign(const ZMap& machined, const MeshIndex& design
     double& d = c.deviation[k];
     if (std::isnan(d)) continue;
     d = machined.heights()[k] - d;
+    if (std::isnan(d)) continue;  // no material on the cell's line (a frame's void cell)
     ++s.cells;
     sum += d, sumSq += d * d;
     s.min = std::min(s.min, d), s.max = std::max(s.max, d);

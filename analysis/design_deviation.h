@@ -49,7 +49,8 @@ struct Gouge {
 struct DesignComparison {
   GridSpec grid;
   double tolerance = 0;           // gouge tolerance, mm
-  std::vector<double> deviation;  // per cell in ZMap order; NaN: no design there
+  std::vector<double> deviation;  // per cell in ZMap order; NaN: no design there, or no
+                                  // material (a frame's void cell)
   DeviationSummary summary;
   std::vector<Gouge> gouges;  // deepest first
 };

@@ -97,6 +97,15 @@ void checkTeethInputs(const Job& job) {
   }
 }
 
+// A mesh of the part in frame coordinates (a rigid motion: the facets keep their
+// winding and outside).
+TriangleMesh meshInFrame(const TriangleMesh& mesh, const GridFrame& frame) {
+  TriangleMesh out = mesh;
+  for (Vec3& p : out.vertices) p = frame.pointToFrame(p);
+  for (Vec3& n : out.normals) n = frame.directionToFrame(n);
+  return out;
+}
+
 // With a frame: what a frame cannot hold refused, and the path moved into the frame's
 // coordinates (raycast/grid_frame.h). Moves that stay below -depth cannot reach the map
 // and become rapids (not swept); every other cutting move must point its axis to the
@@ -115,10 +124,15 @@ void placePathInFrame(Job& job) {
     throw InputError("grid.frame",
                      "the teeth cutting model is not supported in a frame; use cutting.model "
                      "\"envelope\" or leave out grid.frame");
-  if (!job.designFile.empty())
+  if (job.normalDeviation)
     throw InputError("grid.frame",
-                     "the design comparison is vertical and needs the map without a frame; "
-                     "leave out grid.frame or design");
+                     "the design's normal deviation does not depend on the map's frame (it "
+                     "measures along the design's own normals): run it in a job without "
+                     "grid.frame");
+  // The design seen in the frame: its height along the normal on each cell's line is
+  // then the vertical comparison's design height (analysis/design_deviation.h).
+  if (job.design)
+    job.design = std::make_shared<const TriangleMesh>(meshInFrame(*job.design, frame));
   job.path = pathInFrame(job.path, frame);
   for (size_t k = 0; k < job.path.moves.size(); ++k) {
     Move& m = job.path.moves[k];

@@ -12,11 +12,14 @@
 #include <cmath>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <set>
 
+#include "analysis/triangle_mesh.h"
 #include "base/input_error.h"
 #include "tests/support/cli_harness.h"
 #include "tests/support/input_error_message.h"
 #include "tools/io/job.h"
+#include "tools/io/stl_io.h"
 #include "tools/run/job_loader.h"
 #include "tools/run/simulation_run.h"
 
@@ -87,6 +90,60 @@ TEST_F(FrameRun, AWallCutByAHorizontalBallIsTheClosedFormSeenFromTheSide) {
   EXPECT_LE(worst, 1e-9);
   EXPECT_LT(map.minHeight(), -0.29);  // the balls' bottoms: 0.7 - 1 at the passes
   EXPECT_GT(map.maxHeight(), -0.22);  // crests, and the rows beyond the last pass
+}
+
+// The vertical design comparison runs in the frame: the wall's design (the plane
+// x = 19.75 where the passes' bottoms lie, two facets facing +X; exact in the STL's
+// float32) seen from +X has w = -0.25 on every line, so each cell's deviation is its
+// height + 0.25: the scallops. One pass 0.125 mm deeper than the design (tip x =
+// 19.625, at z = -2.025, a row of cell centres) is a gouge traced to its moves' lines. Normal
+// deviation in a frame is refused (it does not depend on one).
+TEST_F(FrameRun, TheDesignIsComparedAlongTheFramesNormal) {
+  std::string cl;
+  for (int k = 0; k < 6; ++k) {
+    const double z = k == 2 ? -2.025 : -0.4 - 0.8 * k, x = k == 2 ? 19.625 : 19.75;
+    cl += fmt::format("25 -2 {0} 1 0 0\n{1} -2 {0} 1 0 0\n{1} 12 {0} 1 0 0\n25 12 {0} 1 0 0\n\n", z,
+                      x);
+  }
+  write("wall.cl", cl);
+  TriangleMesh wall;
+  wall.vertices = {{19.75, -1, -6}, {19.75, 11, -6}, {19.75, 11, 1}, {19.75, -1, 1}};
+  wall.triangles = {{0, 1, 2}, {0, 2, 3}};
+  wall.normals = {{1, 0, 0}, {1, 0, 0}};
+  writeStl(wall, path("wall.stl"), StlFormat::Binary, "wall");
+  json job = json::parse(R"({
+    "tool":  {"type": "ball", "radius": 1},
+    "stock": {"min": [0, 0, -5], "max": [20, 10, 0]},
+    "grid":  {"spacing": 0.05, "frame": {"origin": [20, 0, -5], "u": [0, 1, 0],
+                                         "normal": [1, 0, 0], "size": [10, 5]}},
+    "path":  {"file": "wall.cl"},
+    "design": {"stl": "wall.stl", "gouge_tolerance": 0.01}})");
+  const test::CliRun r =
+      run("simulate " + write("wall.json", job.dump()).string() + " -o " + path("out") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json report = json::parse(r.out);
+  const json& design = report.at("design");
+  const json& dev = design.at("deviation_mm");
+  const json& m = report.at("measurements");
+  EXPECT_NEAR(dev.at("max").get<double>(), m.at("max_height").get<double>() + 0.25, 1e-12)
+      << design;
+  EXPECT_NEAR(dev.at("min").get<double>(), -0.125, 1e-9) << design;
+  EXPECT_EQ(design.at("cells_compared"), 200 * 100);
+  const json& gouges = design.at("gouges");
+  EXPECT_EQ(gouges.at("count"), 1) << design;
+  ASSERT_EQ(gouges.at("deepest").size(), 1u) << design;
+  const json& gouge = gouges["deepest"][0];
+  EXPECT_NEAR(gouge.at("depth_mm").get<double>(), 0.125, 1e-9);
+  EXPECT_NEAR(gouge.at("y").get<double>() - 5, -2.025, 1e-12);  // v = z + 5 in the part
+  const std::set<int> lines = {11, 12, 13};  // the deep pass's cutting moves' CL lines
+  ASSERT_FALSE(gouge.at("moves").empty());
+  for (const json& mv : gouge.at("moves"))
+    EXPECT_TRUE(lines.count(mv.at("line").get<int>())) << gouge;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "deviation.png"));
+
+  job["design"]["normal_deviation"] = true;
+  EXPECT_NE(errorOf(write("nd.json", job.dump())).find("does not depend on the map's frame"),
+            std::string::npos);
 }
 
 // A ball R = 1 plunged to tip z = -1.5 at (5, 5), seen from above with depth 1: a
