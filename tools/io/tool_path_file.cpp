@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "base/available_memory.h"
 #include "base/input_error.h"
 #include "sweep/swept_segment.h"
 #include "tools/io/apt_reader.h"
@@ -33,6 +34,21 @@ void IgnoredWords::add(const std::string& word, const std::string& meaning, int6
 }
 
 void ToolPathFile::addMove(const Pose& from, const Pose& to, bool rapid, int64_t line) {
+  constexpr size_t kCheckedFrom = size_t(1) << 20;  // moves; /proc is read once a doubling
+  const size_t n = path.moves.size();
+  if (n == path.moves.capacity() && (n >= kCheckedFrom || memoryBytes > 0)) {
+    const double perMove = double(sizeof(Move) + sizeof(int64_t));
+    const double grown = 3 * double(std::max<size_t>(n, 1)) * perMove;  // old + new arrays
+    const double available = memoryBytes > 0 ? memoryBytes : availableMemoryBytes();
+    if (grown > 0.8 * available)
+      throw InputError(
+          fmt::format("{}:{}", source, line),
+          fmt::format("the program's moves do not fit in memory: {} moves read so far take "
+                      "{:.3g} GiB, and holding them as they grow needs {:.3g} GiB of the {:.3g} "
+                      "GiB available; split the program into several jobs",
+                      n, double(n) * perMove / double(1ull << 30), grown / double(1ull << 30),
+                      available / double(1ull << 30)));
+  }
   path.moves.push_back(Move{from, to, rapid});
   moveLines.push_back(line);
 }
@@ -226,6 +242,8 @@ ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& op
   if (!in) throw InputError(path, "cannot open the tool-path file");
   const std::string ext = lowerExtension(path);
   ToolPathFile file;
+  file.source = path;
+  file.memoryBytes = options.memoryBytes;
   if (ext == ".txt" || (ext == ".cl" && looksLikeClText(in))) {
     readClText(in, path, file, options.axesFromAbove);
   } else if (ext == ".cl" || ext == ".apt" || ext == ".cls") {

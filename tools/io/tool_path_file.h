@@ -87,6 +87,9 @@ struct PathFileOptions {
   // A tool axis below the horizontal (k < 0) is refused as it is read; off when the job
   // has a frame, whose loader judges the axes in the frame (job_loader.h).
   bool axesFromAbove = true;
+  // The memory the moves may take, bytes; 0: what the machine has available
+  // (base/available_memory.h), checked from a million moves on. See ToolPathFile::addMove.
+  double memoryBytes = 0;
 };
 
 struct ToolPathFile {
@@ -102,8 +105,13 @@ struct ToolPathFile {
   // path.cutters[k], or for APT CUTTER/s without LOADTL, k + 1 (their order).
   std::vector<int64_t> toolNumbers;
   IgnoredWords ignored;
+  std::string source;      // the file, for the memory refusal
+  double memoryBytes = 0;  // PathFileOptions::memoryBytes
 
-  // Appends a move from the current location (the last move's end).
+  // Appends a move from the current location (the last move's end). Never killed for
+  // memory: before the moves' arrays grow (doubling: the old and the new are held at
+  // once) their next size is checked against the memory available (80 % of it, as every
+  // refusal), and a program that outgrows it is refused naming the line it reached.
   void addMove(const Pose& from, const Pose& to, bool rapid, int64_t line);
 };
 

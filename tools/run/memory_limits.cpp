@@ -11,17 +11,6 @@
 
 namespace scallop {
 
-double availableMemoryBytes() {
-  double available = 0;
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  double kb = 0;
-  std::string unit;
-  while (meminfo >> key >> kb >> unit)
-    if (key == "MemAvailable:") available = kb * 1024;
-  return available > 0 ? available : 8.0 * (1ull << 30);
-}
-
 double heightMapBytes(const GridSpec& grid) {
   return double(grid.nx) * double(grid.ny) * (sizeof(double) + sizeof(float));
 }

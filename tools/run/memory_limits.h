@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "base/available_memory.h"
 #include "raycast/zmap.h"
 
 namespace scallop {
@@ -13,9 +14,6 @@ struct Job;
 // The bytes a map on `grid` takes while a run holds it: its heights in double, plus
 // their float32 copy while writing.
 double heightMapBytes(const GridSpec& grid);
-
-// /proc/meminfo's MemAvailable, bytes (8 GiB when it cannot be read).
-double availableMemoryBytes();
 
 // What a run would hold in memory, bytes, and what is available; a part fits when it
 // takes at most 80 % of the available memory.

@@ -13,6 +13,7 @@
 #include "base/input_error.h"
 #include "tests/sanitizer.h"
 #include "tests/support/cli_harness.h"
+#include "tests/support/input_error_message.h"
 #include "tests/support/short_moves_job.h"
 #include "tools/io/job.h"
 #include "tools/io/tool_path_file.h"
@@ -128,6 +129,35 @@ TEST(ResourceGuard, ToolPathFilesAreReadAsAStream) {
   RecordProperty("bytes_per_move", std::to_string(bytesPerMove));
   EXPECT_LT(bytesPerMove, 400) << grown[0] << " KB for " << kMoves << " moves";
   std::printf("reading 1e6 CL moves: peak resident size grew by %.0f bytes a move\n", bytesPerMove);
+}
+
+// A program whose moves outgrow the memory is refused as it is read, naming the line
+// it reached (never killed): here with 200 kB allowed.
+TEST(ResourceGuard, AProgramThatOutgrowsTheMemoryIsRefusedAsItIsRead) {
+  const std::string file =
+      (test::fs::temp_directory_path() / ("scallop-grow-" + std::to_string(::getpid()) + ".txt"))
+          .string();
+  {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    for (int k = 0; k <= 5000; ++k) std::fprintf(f, "%d 0 -0.1\n", k);
+    std::fclose(f);
+  }
+  PathFileOptions options;
+  options.memoryBytes = 2e5;
+  const std::string message = inputErrorMessage([&] { readToolPathFile(file, options); });
+  EXPECT_NE(message.find(file + ":"), std::string::npos) << message;
+  EXPECT_NE(message.find("do not fit in memory"), std::string::npos) << message;
+  // The refusal comes at the first growth past the limit: the moves' array full at n
+  // (a power of two) with 3 n (Move + its line) above 80 % of the memory, on the line of
+  // move n + 1 (line 1 is the start location).
+  size_t n = 1;
+  while (3.0 * double(n) * double(sizeof(Move) + sizeof(int64_t)) <= 0.8 * 2e5) n *= 2;
+  EXPECT_NE(message.find(":" + std::to_string(n + 2) + ":"), std::string::npos)
+      << n << " " << message;
+  options.memoryBytes = 1e7;
+  EXPECT_EQ(readToolPathFile(file, options).path.moves.size(), 5000u);
+  std::remove(file.c_str());
 }
 
 }  // namespace
