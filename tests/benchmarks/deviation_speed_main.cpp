@@ -2,19 +2,21 @@
 // (issue 34's target: design points a second at least 1/2 of the z-map's cells a
 // second). The job: a ball raster over a plane, the z-map at 0.05 mm (200 x 200 cells),
 // and a design that is the plane with its vertices at those cells' centres (40 000
-// points). One thread.
+// points), or ("curved") the same vertices on a gentle wave (every vertex its own
+// normal). One thread.
 //
-//   scallop_deviation_speed zmap|deviation [REPEATS]
+//   scallop_deviation_speed zmap|deviation|curved [REPEATS]
 //
-// runs simulate() or normalDeviation() REPEATS times (default 1) and prints the items
-// (cells or points) and a hash of the results. Under callgrind each run is one dump
-// ("zmap" or "deviation") holding only that call's instructions; for wall times pair
-// the two modes with farm-bench --vs and many repeats (the set-up is then negligible).
+// runs simulate() or normalDeviation() REPEATS times (default 1) and prints, for each
+// call, the items (cells or points), its wall seconds and a hash of the results. Under
+// callgrind each call is one dump ("zmap" or "deviation") holding only its instructions.
 // It links the simulation libraries only (OpenImageIO's libhwy would stop valgrind).
 #include <tbb/global_control.h>
 #include <valgrind/callgrind.h>
 
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -47,9 +49,11 @@ int run(const std::string& mode, int repeats) {
   raster.stepOver = 0.7;
   raster.depth = 0.4;
   const ToolPath path = makeRaster(cutter, stock, raster);
-  const double planeZ = -0.45;  // below the passes' floor: every line is cut
+  const double planeZ = -0.45;                      // below the passes' floor: every line is cut
+  const double wave = mode == "curved" ? 0.02 : 0;  // mm
   auto point = [&](int64_t i, int64_t j) {
-    return Vec3{grid.cellCentreX(i), grid.cellCentreY(j), planeZ};
+    const double x = grid.cellCentreX(i), y = grid.cellCentreY(j);
+    return Vec3{x, y, planeZ + wave * std::sin(3 * x) * std::cos(2 * y)};
   };
   std::vector<std::array<Vec3, 3>> soup;  // wound so that the normal is +z
   for (int64_t i = 0; i + 1 < grid.nx; ++i)
@@ -62,20 +66,26 @@ int run(const std::string& mode, int repeats) {
   for (int r = 0; r < repeats; ++r) {
     if (mode == "zmap") {
       CALLGRIND_ZERO_STATS;
+      const auto t0 = std::chrono::steady_clock::now();
       const SimulationResult result = simulate(cutter, path, stock, grid);
+      const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - t0;
       CALLGRIND_DUMP_STATS_AT("zmap");
-      std::printf("zmap cells=%lld hash=%016llx\n", static_cast<long long>(grid.cells()),
+      std::printf("zmap cells=%lld seconds=%.6f hash=%016llx\n",
+                  static_cast<long long>(grid.cells()), seconds.count(),
                   static_cast<unsigned long long>(hashOf(result.map.heights())));
-    } else if (mode == "deviation") {
+    } else if (mode == "deviation" || mode == "curved") {
       CALLGRIND_ZERO_STATS;
+      const auto t0 = std::chrono::steady_clock::now();
       const NormalDeviation d = normalDeviation(cutter, path, stock, design, 1.0);
+      const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - t0;
       CALLGRIND_DUMP_STATS_AT("deviation");
-      std::printf("deviation points=%zu candidates=%llu evaluations=%llu hash=%016llx\n",
-                  design.vertices.size(), static_cast<unsigned long long>(d.candidates),
-                  static_cast<unsigned long long>(d.exactEvaluations),
-                  static_cast<unsigned long long>(hashOf(d.deviation)));
+      std::printf(
+          "deviation points=%zu seconds=%.6f candidates=%llu evaluations=%llu hash=%016llx\n",
+          design.vertices.size(), seconds.count(), static_cast<unsigned long long>(d.candidates),
+          static_cast<unsigned long long>(d.exactEvaluations),
+          static_cast<unsigned long long>(hashOf(d.deviation)));
     } else {
-      std::fprintf(stderr, "usage: scallop_deviation_speed zmap|deviation [REPEATS]\n");
+      std::fprintf(stderr, "usage: scallop_deviation_speed zmap|deviation|curved [REPEATS]\n");
       return 2;
     }
   }
@@ -88,7 +98,7 @@ int run(const std::string& mode, int repeats) {
 int main(int argc, char** argv) {
   const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
   if (argc < 2) {
-    std::fprintf(stderr, "usage: scallop_deviation_speed zmap|deviation [REPEATS]\n");
+    std::fprintf(stderr, "usage: scallop_deviation_speed zmap|deviation|curved [REPEATS]\n");
     return 2;
   }
   return scallop::run(argv[1], argc > 2 ? std::atoi(argv[2]) : 1);
