@@ -183,6 +183,9 @@ struct MoveSet {
 // candidates through a grid of the moves' shadows across the normal (shadow_grid.h).
 constexpr size_t kVerticesForGrid = 64;
 
+// The moves swept in a normal's frame that a thread keeps (each ~1.5 KB).
+constexpr size_t kSweptMovesKept = 4096;
+
 // One thread's scratch; the heights do not depend on it. Moves are swept in the frame
 // of the line's rotation alone (origin at the part's origin), which every vertex with
 // the same normal shares, and so are their support values in that frame: consecutive
@@ -209,10 +212,18 @@ struct LineScratch {
   std::vector<PerMove> perMove;
   uint32_t stamp = 0;
   struct Swept {
+    size_t k;                               // the move
     std::unique_ptr<const SweptMove> move;  // null: k < 0
     SectionMemo memo;
   };
   std::vector<Swept> swept;
+
+  // Forgets the swept moves (they are swept again when needed): at most kSweptMovesKept
+  // are kept, a few MB, however many moves a large face meets.
+  void forgetSwept() {
+    for (const Swept& m : swept) perMove[m.k].swept = -1;
+    swept.clear();
+  }
 
   // Makes `n` the current normal, for a run of `vertices` vertices sharing it.
   void useNormal(const Vec3& n, size_t vertices, const MoveSet& set, double depth) {
@@ -288,8 +299,10 @@ VertexResult deviationAt(const Vec3& p, const Vec3& n, size_t groupSize, const T
       const Move& m = path.moves[moves[k].move];
       const ToolPath one = moveInFrame(path, m, rotation);
       const Cutter& c = path.cutters.empty() ? cutter : path.cutters[m.tool];
+      if (scratch.swept.size() >= kSweptMovesKept) scratch.forgetSwept();
       per.swept = int32_t(scratch.swept.size());
       scratch.swept.emplace_back();
+      scratch.swept.back().k = k;
       if (axisOnNormalSide(one.moves[0]))
         scratch.swept.back().move =
             std::make_unique<const SweptMove>(c, PoseCurve::ofMove(one, one.moves[0]));

@@ -58,7 +58,7 @@ bool ShadowGrid::build(const std::vector<Box3>& boxes, const Vec3& u, const Vec3
     cellRange(r, i0, j0, i1, j1);
     entries += uint64_t(i1 - i0 + 1) * uint64_t(j1 - j0 + 1);
   }
-  if (entries > (uint64_t(1) << 28)) {
+  if (entries > std::max<uint64_t>(uint64_t(1) << 22, 32 * uint64_t(boxes.size()))) {
     nx_ = ny_ = 0;
     return false;
   }

@@ -19,7 +19,8 @@ namespace scallop {
 class ShadowGrid {
  public:
   // About `cellsPerBox` cells a box over the rectangles' union (at most 2^22 cells).
-  // False (and an empty grid) when the lists would hold more than 2^28 entries.
+  // False (and an empty grid) when the lists would hold more than max(2^22, 32 a box)
+  // entries (long boxes across the grid's axes): the caller then searches otherwise.
   bool build(const std::vector<Box3>& boxes, const Vec3& u, const Vec3& v, double slack,
              double cellsPerBox = 16);
 
