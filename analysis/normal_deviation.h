@@ -44,7 +44,13 @@ struct NormalDeviation {
 // its own. `gougeDepth` > 0 (mm). Rotary machine moves are not supported (their
 // curves are machine angles of the part frame): the caller refuses them. Parallel over
 // vertices; the result does not depend on the number of threads.
+//
+// The moves that can reach a line are found through an index of their boxes (an Embree
+// BVH, rays along the lines; move_line_index.h) or, for tests, by trying every move: the
+// deviations are the same bits either way.
+enum class CandidateSearch { kIndexed, kAllMoves };
 NormalDeviation normalDeviation(const Cutter& cutter, const ToolPath& path, const Box3& stock,
-                                const TriangleMesh& design, double gougeDepth);
+                                const TriangleMesh& design, double gougeDepth,
+                                CandidateSearch search = CandidateSearch::kIndexed);
 
 }  // namespace scallop
