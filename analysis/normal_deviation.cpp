@@ -168,6 +168,7 @@ struct VertexResult {
   double w;
   VertexDeviation status;
   uint32_t candidates, evaluations;
+  int64_t move;  // the path's move that made w; -1: the stock's surface (or none)
 };
 
 // The part frame's moves, their boxes and an index of them for the lines' candidate
@@ -254,7 +255,7 @@ struct LineScratch {
 VertexResult deviationAt(const Vec3& p, const Vec3& n, size_t groupSize, const ToolPath& path,
                          const Cutter& cutter, const MoveSet& set, const Box3& stock, double depth,
                          LineScratch& scratch) {
-  VertexResult r{NAN, VertexDeviation::kUnresolved, 0, 0};
+  VertexResult r{NAN, VertexDeviation::kUnresolved, 0, 0, -1};
   if (!(length(n) > 0)) return r;
   scratch.useNormal(n, groupSize, set, depth);
   const GridFrame& rotation = scratch.rotation;
@@ -314,7 +315,7 @@ VertexResult deviationAt(const Vec3& p, const Vec3& n, size_t groupSize, const T
     }
     ++r.evaluations;
     const LowestPoint lp = swept.move->lowestPoint(x0, y0, &swept.memo, best + np);
-    if (lp.hit && lp.z - np < best) best = lp.z - np;
+    if (lp.hit && lp.z - np < best) best = lp.z - np, r.move = int64_t(moves[k].move);
   }
   if (unresolved) return r;
   if (best < -depth) {
@@ -454,10 +455,14 @@ NormalDeviation normalDeviation(const Cutter& cutter, const ToolPath& path, cons
 
   out.deviation.resize(n);
   out.status.resize(n);
+  out.lowestMove.resize(n);
   for (size_t v = 0; v < n; ++v) {
     const VertexResult& r = results[v];
     out.deviation[v] = r.w;
     out.status[v] = r.status;
+    out.lowestMove[v] =
+        r.status == VertexDeviation::kMeasured || r.status == VertexDeviation::kCutThrough ? r.move
+                                                                                           : -1;
     out.cutThrough += r.status == VertexDeviation::kCutThrough;
     out.noMaterial += r.status == VertexDeviation::kNoMaterial;
     out.unresolved += r.status == VertexDeviation::kUnresolved;

@@ -33,6 +33,10 @@ struct NormalDeviation {
   std::vector<Vec3> normals;      // per vertex, unit (zero: none)
   std::vector<double> deviation;  // per vertex, mm; NaN unless measured or cut through
   std::vector<VertexDeviation> status;
+  // Per vertex, the index in path.moves of the move whose swept solid made its value
+  // (the first in the visit's order to reach the lowest point); -1 where the value is
+  // the stock's surface or there is none.
+  std::vector<int64_t> lowestMove;
   int64_t cutThrough = 0, noMaterial = 0, unresolved = 0;
   uint64_t candidates = 0;        // (vertex, move) pairs the bounds could not rule out
   uint64_t exactEvaluations = 0;  // of those, the ones the kernel was asked about

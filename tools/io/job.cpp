@@ -318,8 +318,9 @@ Job parseJob(const std::string& textIn, const std::string& source,
 
     if (doc.contains("design")) {
       const json& design = requireObject(doc, "design", "design");
-      rejectUnknownKeys(design, {"stl", "gouge_tolerance", "normal_deviation", "gouge_depth"},
-                        "design");
+      rejectUnknownKeys(
+          design, {"stl", "gouge_tolerance", "normal_deviation", "gouge_depth", "scallop_limit"},
+          "design");
       job.designFile = besideJob(text(design, "stl", "design.stl"));
       job.gougeTolerance =
           number(design, "gouge_tolerance", "design.gouge_tolerance", &job.gougeTolerance);
@@ -329,6 +330,14 @@ Job parseJob(const std::string& textIn, const std::string& source,
       if (!(job.gougeDepth > 0))
         throw InputError("design.gouge_depth",
                          "must be > 0 mm (how far below the design surface a cut still counts)");
+      if (design.contains("scallop_limit")) {
+        job.scallopLimit = number(design, "scallop_limit", "design.scallop_limit");
+        if (!(job.scallopLimit > 0))
+          throw InputError("design.scallop_limit",
+                           "must be > 0 mm (the deviation above which material left counts)");
+        if (!job.normalDeviation)
+          throw InputError("design.scallop_limit", "goes with \"normal_deviation\": true");
+      }
     }
 
     const json pathDoc =
@@ -452,6 +461,7 @@ json jobToJson(const Job& job) {
     out["design"] = {{"stl", job.designFile}, {"gouge_tolerance", job.gougeTolerance}};
     if (job.normalDeviation)
       out["design"].update({{"normal_deviation", true}, {"gouge_depth", job.gougeDepth}});
+    if (!std::isnan(job.scallopLimit)) out["design"]["scallop_limit"] = job.scallopLimit;
   }
   json offsets = json::object();
   for (int k = 0; k < 6; ++k) {

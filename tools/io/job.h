@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
@@ -80,6 +81,7 @@ struct Job {
   // design surface do not count.
   bool normalDeviation = false;
   double gougeDepth = 1;
+  double scallopLimit = NAN;  // mm: design.scallop_limit (NaN: none)
 
   GridSpec grid() const;
   // The stock's highest point on the map's lines: stock.max.z, or in a frame the box's

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "analysis/deviation_areas.h"
 #include "analysis/normal_deviation.h"
 #include "tools/io/job.h"
 #include "tools/io/ply_writer.h"
@@ -42,6 +44,35 @@ nlohmann::json statistics(const std::vector<double>& deviation, double gougeTole
           {"histogram", {{"from_mm", *lo}, {"bin_width_mm", width}, {"counts", counts}}}};
 }
 
+// The moves whose swept solids made the gouged vertices' values, deepest first (at most
+// kMovesListed): 1-based move, its file line, how many vertices, the deepest value.
+constexpr size_t kMovesListed = 20;
+nlohmann::json gougingMoves(const Job& job, const NormalDeviation& d) {
+  struct Gouging {
+    int64_t vertices = 0;
+    double deepest = HUGE_VAL;
+  };
+  std::map<int64_t, Gouging> byMove;
+  for (size_t v = 0; v < d.deviation.size(); ++v)
+    if (d.deviation[v] < -job.gougeTolerance && d.lowestMove[v] >= 0) {
+      Gouging& g = byMove[d.lowestMove[v]];
+      ++g.vertices;
+      g.deepest = std::min(g.deepest, d.deviation[v]);
+    }
+  std::vector<std::pair<int64_t, Gouging>> moves(byMove.begin(), byMove.end());
+  std::stable_sort(moves.begin(), moves.end(), [](const auto& a, const auto& b) {
+    return a.second.deepest < b.second.deepest;
+  });
+  nlohmann::json list = nlohmann::json::array();
+  for (size_t k = 0; k < std::min(moves.size(), kMovesListed); ++k) {
+    const auto& [move, g] = moves[k];
+    nlohmann::json m = {{"move", move + 1}, {"vertices", g.vertices}, {"deepest_mm", g.deepest}};
+    if (size_t(move) < job.moveLines.size()) m["line"] = job.moveLines[size_t(move)];
+    list.push_back(m);
+  }
+  return {{"count", moves.size()}, {"deepest", list}};
+}
+
 }  // namespace
 
 nlohmann::json normalDeviationReport(const Job& job, const std::string& outDir, bool quiet) {
@@ -52,6 +83,17 @@ nlohmann::json normalDeviationReport(const Job& job, const std::string& outDir, 
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   nlohmann::json r = statistics(d.deviation, job.gougeTolerance);
   r["gouge_depth_mm"] = job.gougeDepth;
+  const DeviationAreas areas =
+      deviationAreas(*job.design, d.deviation, job.scallopLimit, job.gougeTolerance);
+  r["areas"] = {{"interpolation", "linear across each facet from its vertices"},
+                {"measured_mm2", areas.measuredMm2},
+                {"gouged_mm2", areas.gougedMm2},
+                {"facets_left_out", areas.facetsLeftOut}};
+  if (!std::isnan(job.scallopLimit)) {
+    r["areas"]["scallop_limit_mm"] = job.scallopLimit;
+    r["areas"]["above_limit_mm2"] = areas.aboveLimitMm2;
+  }
+  r["gouging_moves"] = gougingMoves(job, d);
   r["cut_through_vertices"] = d.cutThrough;
   r["no_material_vertices"] = d.noMaterial;
   r["unresolved_vertices"] = d.unresolved;

@@ -97,6 +97,46 @@ TEST_F(NormalDeviationRun, ThePlyHoldsTheZMapLessThePlaneAndTheReportItsStatisti
   EXPECT_NE(report.at("outputs").dump().find("deviation.ply"), std::string::npos);
 }
 
+// The design 0.05 mm above the floor the raster cut (z = -0.25): the report's areas are
+// the plane's (1.6 mm square) and the parts of it gouged and above a 5 um scallop
+// limit, and the gouging moves are the raster's passes, deepest first, at the PLY's
+// lowest value.
+TEST_F(NormalDeviationRun, TheReportHasTheAreasAndTheMovesThatGouge) {
+  std::vector<std::array<Vec3, 3>> soup;
+  const auto at = [](int a, int b) { return Vec3{1.05 + 0.2 * a, 1.05 + 0.2 * b, -0.25}; };
+  for (int a = 0; a + 1 < kSide; ++a)
+    for (int b = 0; b + 1 < kSide; ++b) {
+      soup.push_back({at(a, b), at(a + 1, b), at(a, b + 1)});
+      soup.push_back({at(a + 1, b), at(a + 1, b + 1), at(a, b + 1)});
+    }
+  writeStl(meshFromTriangles(soup), path("plane.stl"), StlFormat::Binary, "plane");
+  std::string job = kJob;
+  job.replace(job.find(R"("gouge_depth": 1)"), 16, R"("gouge_depth": 1, "scallop_limit": 0.005)");
+  const CliRun r = run("simulate " + write("job.json", job).string() + " -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json nd = json::parse(scallop::test::slurp(path("out/report.json")))
+                      .at("design")
+                      .at("normal_deviation");
+  const json& areas = nd.at("areas");
+  // 1e-6: the STL holds the corners in float32 (2.65 to 6e-8 relative).
+  EXPECT_NEAR(areas.at("measured_mm2").get<double>(), 1.6 * 1.6, 1e-6) << areas;
+  EXPECT_EQ(areas.at("facets_left_out"), 0);
+  const double gouged = areas.at("gouged_mm2").get<double>();
+  const double above = areas.at("above_limit_mm2").get<double>();
+  EXPECT_GT(gouged, 0.5) << areas;  // the passes' grooves, 0.05 mm below the design
+  // The highest vertices (between the passes) stand above the limit.
+  ASSERT_GT(nd.at("max_mm").get<double>(), 0.005) << nd;
+  EXPECT_GT(above, 0) << areas;
+  EXPECT_LE(gouged + above, 1.6 * 1.6 + 1e-6);
+  const json& moves = nd.at("gouging_moves");
+  ASSERT_GE(moves.at("count").get<int>(), 2) << moves;
+  const json& deepest = moves.at("deepest");
+  EXPECT_NEAR(deepest[0].at("deepest_mm").get<double>(), nd.at("min_mm").get<double>(), 1e-12);
+  for (size_t k = 1; k < deepest.size(); ++k)
+    EXPECT_LE(deepest[k - 1].at("deepest_mm").get<double>(),
+              deepest[k].at("deepest_mm").get<double>());
+}
+
 TEST_F(NormalDeviationRun, BadDesignsAndKeysAreErrorsWithNothingWritten) {
   writePlane(path("plane.stl"), true);
   CliRun r = run("simulate " + write("job.json", kJob).string() + " -o " + path("out"));
@@ -108,6 +148,8 @@ TEST_F(NormalDeviationRun, BadDesignsAndKeysAreErrorsWithNothingWritten) {
 
   for (const auto& [bad, field] :
        {std::pair{R"("gouge_depth": 0)", "design.gouge_depth"},
+        std::pair{R"("normal_deviation": true, "scallop_limit": -1)", "design.scallop_limit"},
+        std::pair{R"("scallop_limit": 0.01)", "design.scallop_limit"},
         std::pair{R"("normal_deviation": "yes", "gouge_depth": 1)", "design.normal_deviation"}}) {
     std::string job = kJob;
     job.replace(job.find(R"("normal_deviation": true, "gouge_depth": 1)"),
