@@ -54,34 +54,53 @@ bool planeFrom(const SweptMove& seg, const LowestPoint& lp, double x, double y, 
 
 // The plane's normal needs no exact evaluation: any downward direction gives a valid
 // plane (planeBelow takes the solid's exact support), only a tight one culls well. For
-// a whole move's tile (moves shorter than a few cells), the normal at (x, y) of the
-// cutter with a vertical axis at the nearest point of the tip path: the torus's at the
-// horizontal distance h from the axis, sin(beta) = (h - Rb) / r, turned perpendicular to
-// the move where that point lies inside it (the envelope's normal contains no component
-// along the move; a cutter at either end is stationary). For a ball or bull cutter with
-// a vertical axis this is the exact normal; a tilted axis or another profile only
-// loosens the plane. Five of these replace five exact evaluations, which were a third
-// of the scene build of a million short moves (issue 37).
+// a whole move's tile (moves shorter than a few cells), the normal of the solid swept by
+// the cutter with a vertical axis, in closed form: on the envelope it is perpendicular to
+// the move, N = (e N_m + u N_u, N_z) with N_u = -N_z sigma (sigma: the move's slope, u
+// its horizontal direction, e across it), and the contact lies Rb + r |N_xy| from the
+// axis (the torus, r the corner radius) at the centre line's point r N_u behind it along
+// u; beyond the move's ends, the stationary cutter's torus normal. Exact for a ball with
+// a vertical axis; for a bull the flat's share (Rb) is taken across the move only, and a
+// tilted axis or another profile only loosens the plane. Five of these replace five exact
+// evaluations, which were a third of the scene build of a million short moves (issue 37).
 LowestPoint closedFormPlaneHint(const SweptMove& seg, double x, double y) {
   const Vec3 &a = seg.start(), &b = seg.end();
-  const double ux = b.x - a.x, uy = b.y - a.y, uu = ux * ux + uy * uy;
-  const double t = uu > 0 ? std::clamp(((x - a.x) * ux + (y - a.y) * uy) / uu, 0.0, 1.0) : 0.0;
-  const double hx = x - (a.x + t * ux), hy = y - (a.y + t * uy), h = std::hypot(hx, hy);
   const Cutter& c = seg.cutter();
   const double r = c.general() ? c.radius : c.cornerRadius;
   const double Rb = c.general() ? 0.0 : c.bottomRadius();
   LowestPoint lp;
-  const double sinB = r > 0 ? std::min(1.0, std::max(0.0, (h - Rb) / r)) : (h > Rb ? 1.0 : 0.0);
-  if (sinB >= 1) return lp;  // beyond the bottom: the rim's steep plane
-  const double cosB = std::sqrt(1 - sinB * sinB);
-  Vec3 N = h > 0 ? Vec3{hx / h * sinB, hy / h * sinB, -cosB} : Vec3{0, 0, -1};
-  if (t > 0 && t < 1) {
-    // N . d = 0 with the move's slope dz / |d_xy|: the envelope's normal.
-    const double slope = (b.z - a.z) / uu;
-    N.x += cosB * slope * ux, N.y += cosB * slope * uy;
+  // The stationary cutter at tip (px, py): the torus normal at the horizontal distance
+  // from its axis, or nothing beyond its bottom (planeFrom's steep rim plane).
+  auto stationary = [&](double px, double py) {
+    const double hx = x - px, hy = y - py, h = std::hypot(hx, hy);
+    const double sinB = r > 0 ? std::clamp((h - Rb) / r, 0.0, 1.0) : (h > Rb ? 1.0 : 0.0);
+    if (sinB >= 1) return;
+    const double cosB = std::sqrt(1 - sinB * sinB);
+    lp.normal = h > 0 ? Vec3{hx / h * sinB, hy / h * sinB, -cosB} : Vec3{0, 0, -1};
+    lp.hit = true;
+  };
+  const double ux = b.x - a.x, uy = b.y - a.y, w = std::hypot(ux, uy);
+  if (!(w > 1e-12)) {
+    stationary(a.x, a.y);
+    return lp;
   }
-  lp.normal = normalize(N);
-  lp.hit = true;
+  const double ex = ux / w, ey = uy / w, sigma = (b.z - a.z) / w;
+  const double along = (x - a.x) * ex + (y - a.y) * ey, across = (x - a.x) * -ey + (y - a.y) * ex;
+  const double h = std::fabs(across);
+  const double Nm = r > 0 ? std::min(1.0, std::max(0.0, h - Rb) / r) : (h > Rb ? 1.0 : 0.0);
+  if (Nm < 1) {
+    const double Nz = -std::sqrt((1 - Nm * Nm) / (1 + sigma * sigma)), Nu = -Nz * sigma;
+    const double centre = along - r * Nu;  // the centre line's point under the contact
+    if (centre >= 0 && centre <= w) {
+      const double side = across < 0 ? -1.0 : 1.0;
+      lp.normal = {-ey * side * Nm + ex * Nu, ex * side * Nm + ey * Nu, Nz};
+      lp.hit = true;
+      return lp;
+    }
+    stationary(centre < 0 ? a.x : b.x, centre < 0 ? a.y : b.y);
+    return lp;
+  }
+  stationary(along < 0.5 * w ? a.x : b.x, along < 0.5 * w ? a.y : b.y);
   return lp;
 }
 
