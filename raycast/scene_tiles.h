@@ -110,6 +110,10 @@ TilePlane planeBelow(const SweptMove& seg, const Vec3& N);
 // The plane to keep for a segment from its exact lowest point at (x, y) (swept_scene.cpp
 // says which); false when none applies.
 bool planeFrom(const SweptMove& seg, const LowestPoint& lp, double x, double y, TilePlane& plane);
+// A normal of the swept solid's bottom near (x, y) without an exact evaluation, for a
+// whole move's tile: see swept_scene.cpp. `hit` is false where (x, y) lies beyond the
+// cutter's bottom (planeFrom then leans a steep plane outwards).
+LowestPoint closedFormPlaneHint(const SweptMove& seg, double x, double y);
 
 // The cutoff to evaluate a guessed winner with (a neighbour's). A turning move's search
 // first tries to prove the move stays above its cutoff (ray clearance, swept_move.cpp
@@ -147,6 +151,7 @@ struct SweptScene::Impl {
   std::string lastError;
   std::atomic<int64_t> embreeBytes{0};  // Embree's allocations less its frees (its monitor)
 
+  // The tiles, and originZ (below every segment's box).
   void buildTiles(const SceneOptions& options);
   void buildEmbree();
 };

@@ -10,7 +10,7 @@
 // mm of the height returned.
 //
 // Memory: sizeof(SweptMove) bytes per move (472), plus, for a constant-axis
-// move, one SweptSegment on the heap (1 048 bytes; see bytesPerMove()).
+// move, one SweptSegment on the heap (1 056 bytes; see bytesPerMove()).
 #pragma once
 
 #include <cmath>

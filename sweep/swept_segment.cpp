@@ -295,20 +295,53 @@ SweptSegment::SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& 
     n_ = normalize(Vec3{sigma_ * uHat_.x, sigma_ * uHat_.y, -1});
     lowM_ = cutterSupport(cutter_, axis_, -m_);
     highM_ = cutterSupport(cutter_, axis_, m_);
-    // Section roots at evenly spaced offsets across K (see section()).
-    const double cMin = dot(lowM_, m_), cMax = dot(highM_, m_);
-    nodes_[0] = {-1, lowM_, 0.0};
-    nodes_[kSectionNodes - 1] = {1, highM_, 0.0};
-    for (int k = 1; k + 1 < kSectionNodes; ++k) {
-      const double c = cMin + (cMax - cMin) * k / (kSectionNodes - 1);
-      double root = 0;
-      const Section sec = search(c, -1, lowM_, 1, highM_, 0, &root);
-      const SupportWithSlope sw = supportWithSlope(
-          cutter_, axis_, n_ * (1 - root * root) + m_ * (2 * root), n_ * (-2 * root) + m_ * 2);
-      const double dcdt = dot(sw.slope, m_);
-      nodes_[size_t(k)] = {root, sec.point, std::isfinite(dcdt) ? dcdt : 0.0};
-    }
   }
+}
+
+SweptSegment::SweptSegment(const SweptSegment& o)
+    : cutter_(o.cutter_),
+      start_(o.start_),
+      end_(o.end_),
+      axis_(o.axis_),
+      delta_(o.delta_),
+      zMin_(o.zMin_),
+      w_(o.w_),
+      sigma_(o.sigma_),
+      uHat_(o.uHat_),
+      m_(o.m_),
+      n_(o.n_),
+      lowM_(o.lowM_),
+      highM_(o.highM_) {
+  const uint32_t ready = o.nodesReady_.load(std::memory_order_acquire);
+  for (int k = 0; k < kSectionNodes; ++k)
+    if ((ready >> k) & 1) nodes_[size_t(k)] = o.nodes_[size_t(k)];
+  nodesClaimed_.store(ready, std::memory_order_relaxed);
+  nodesReady_.store(ready, std::memory_order_relaxed);
+}
+
+SweptSegment::SectionNode SweptSegment::buildSectionNode(int k) const {
+  // The section root at the k-th of evenly spaced offsets across K (see section()).
+  SectionNode node;
+  if (k == 0) {
+    node = {-1, lowM_, 0.0};
+  } else if (k == kSectionNodes - 1) {
+    node = {1, highM_, 0.0};
+  } else {
+    const double cMin = dot(lowM_, m_), cMax = dot(highM_, m_);
+    const double c = cMin + (cMax - cMin) * k / (kSectionNodes - 1);
+    double root = 0;
+    const Section sec = search(c, -1, lowM_, 1, highM_, 0, &root);
+    const SupportWithSlope sw = supportWithSlope(
+        cutter_, axis_, n_ * (1 - root * root) + m_ * (2 * root), n_ * (-2 * root) + m_ * 2);
+    const double dcdt = dot(sw.slope, m_);
+    node = {root, sec.point, std::isfinite(dcdt) ? dcdt : 0.0};
+  }
+  const uint32_t bit = uint32_t(1) << k;
+  if (!(nodesClaimed_.fetch_or(bit, std::memory_order_relaxed) & bit)) {
+    nodes_[size_t(k)] = node;
+    nodesReady_.fetch_or(bit, std::memory_order_release);
+  }
+  return node;
 }
 
 Box3 SweptSegment::bounds() const {
@@ -471,13 +504,12 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
 SweptSegment::Section SweptSegment::section(double c) const {
   const double cMin = dot(lowM_, m_), cMax = dot(highM_, m_);
   if (c < cMin || c > cMax) return {};  // P misses K, so l misses C
-  // The nodes (built with the segment) bracket the root between two neighbours and give
+  // Two nodes (built on first use) bracket the root between two neighbours and give
   // a first guess by linear interpolation; Newton then needs about three steps. The
   // nodes depend only on the segment, so the result is a function of c alone.
   const double u = (c - cMin) / (cMax - cMin) * (kSectionNodes - 1);
   const int k = std::clamp(int(u), 0, kSectionNodes - 2);
-  const SectionNode& a = nodes_[size_t(k)];
-  const SectionNode& b = nodes_[size_t(k + 1)];
+  const SectionNode a = sectionNode(k), b = sectionNode(k + 1);
   const double ca = dot(a.point, m_), cb = dot(b.point, m_);
   if (ca - c <= 0 && cb - c >= 0) {
     // Cubic Hermite interpolation of t(c) with the nodes' slopes dt/dc where both are

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <cstdint>
 
-#include "sweep/cutter.h"
 #include "base/vec3.h"
+#include "sweep/cutter.h"
 
 namespace scallop {
 
@@ -49,6 +51,9 @@ class SweptSegment {
 
   // `axis` must be a unit vector; `start`/`end` are tip positions, mm.
   SweptSegment(const Cutter& cutter, const Vec3& start, const Vec3& end, const Vec3& axis);
+  // A copy takes the section nodes that are built already.
+  SweptSegment(const SweptSegment& other);
+  SweptSegment& operator=(const SweptSegment&) = delete;
 
   // Exact lowest point of the swept solid on the vertical line through (x, y).
   LowestPoint lowestPoint(double x, double y) const;
@@ -91,7 +96,19 @@ class SweptSegment {
     Vec3 point;
     double dcdt = 0;  // slope of the offset along the parameter there (0: unknown)
   };
-  std::array<SectionNode, kSectionNodes> nodes_{};
+  // A node is built on the first section() that needs it, not with the segment: the 15
+  // searches were half of the scene build of a million short moves (issue 37), and a
+  // line of cells needs two neighbouring nodes (a B9 cell's segments, 2 to 4 of 15).
+  // A node depends on the segment and its index alone, so every thread computes the
+  // same bits; the first to claim it publishes it, and a thread that finds it claimed
+  // but not ready uses its own copy. Bit k of nodesReady_: nodes_[k] may be read.
+  SectionNode sectionNode(int k) const {
+    return (nodesReady_.load(std::memory_order_acquire) >> k) & 1 ? nodes_[size_t(k)]
+                                                                  : buildSectionNode(k);
+  }
+  SectionNode buildSectionNode(int k) const;
+  mutable std::atomic<uint32_t> nodesReady_{0}, nodesClaimed_{0};
+  mutable std::array<SectionNode, kSectionNodes> nodes_{};
 };
 
 // Support point of the stationary cutter (tip at origin, unit axis `axis`) in
