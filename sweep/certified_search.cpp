@@ -207,6 +207,8 @@ inline Interval CertifiedSearch::boundOf(int ia, int ib) {
     lower = U_ - kProofGap;
   if (!(lower >= enough) && !(smooth(a) && smooth(b)))
     lower = std::max(lower, intervalBounds_.grownCutter(a, b));
+  if (!(lower >= enough) && !(smooth(a) && smooth(b)) && intervalBounds_.missesBesideFluteTop(a, b))
+    lower = HUGE_VAL;
   return Interval{ia, ib, lower, U_};
 }
 
