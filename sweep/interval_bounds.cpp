@@ -37,6 +37,12 @@
 //      second derivative at the sample less |g'''| w. Where g curves away from the
 //      line (m > 0) and the sample is a minimum of f (g' ~ 0), this proves both
 //      intervals beside it at once, however wide.
+//   2e. Flute top (a miss). 2c and the ray clearance see the flank as if it went on above
+//      the flute top; near the t where the line first touches the top's rim they lose
+//      V w / 2 (first order) and prove only intervals shrinking with their distance from
+//      it. Two cutter-fixed planes that contain every cutter, its top's and one of its
+//      flank's, each proven positive at one height by 2d, show the line misses: the
+//      derivation is at missesBesideFluteTop.
 #include "sweep/interval_bounds.h"
 
 #include <algorithm>

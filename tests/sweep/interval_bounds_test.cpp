@@ -2,8 +2,8 @@
 // touch a turning cutter's flute-top rim where its flank faces down, it must prove the
 // miss of intervals on the side where the line passes beside the cutter (including
 // those a few micro-units of t from the touch), and every interval it proves (of those
-// beside or across the touch) must be a miss in the brute-force reference (each of 65 poses across
-// it, written from the definition: brute_force_reference.h).
+// beside or across the touch) must be a miss in the brute-force reference (each of 65
+// poses across it, written from the definition: brute_force_reference.h).
 #include "sweep/interval_bounds.h"
 
 #include <gtest/gtest.h>
