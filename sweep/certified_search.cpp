@@ -10,7 +10,8 @@
 //      smallest one evaluated, U, satisfies U >= F.
 //   2. Lower bounds of f over an interval I = [ta, tb], each proven (interval_bounds.cpp):
 //      2a a world-fixed plane, 2b a plane fixed to the cutter, 2c a grown cutter, 2d the
-//      Taylor form of 2b at a sample.
+//      Taylor form of 2b at a sample, 2e the flute top's plane with the flank's (a miss,
+//      tried last, where the line passes beside the flank and over the top's rim).
 //   3. Search. First the minimum of f: an interval whose end slopes f' = (N.v) / N.z
 //      (v: velocity of the contact point) change sign is split at the secant root until
 //      the best sample is flat (|f'| <= 1e-8 mm per unit t). Then best first: the
@@ -207,6 +208,8 @@ inline Interval CertifiedSearch::boundOf(int ia, int ib) {
     lower = U_ - kProofGap;
   if (!(lower >= enough) && !(smooth(a) && smooth(b)))
     lower = std::max(lower, intervalBounds_.grownCutter(a, b));
+  if (!(lower >= enough) && !(smooth(a) && smooth(b)) && intervalBounds_.missesBesideFluteTop(a, b))
+    lower = HUGE_VAL;
   return Interval{ia, ib, lower, U_};
 }
 

@@ -37,10 +37,17 @@
 //      second derivative at the sample less |g'''| w. Where g curves away from the
 //      line (m > 0) and the sample is a minimum of f (g' ~ 0), this proves both
 //      intervals beside it at once, however wide.
+//   2e. Flute top (a miss). 2c and the ray clearance see the flank as if it went on above
+//      the flute top; near the t where the line first touches the top's rim they lose
+//      V w / 2 (first order) and prove only intervals shrinking with their distance from
+//      it. Two cutter-fixed planes that contain every cutter, its top's and one of its
+//      flank's, each proven positive at one height by 2d, show the line misses: the
+//      derivation is at missesBesideFluteTop.
 #include "sweep/interval_bounds.h"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "sweep/profile_lowest_point.h"
 
@@ -214,6 +221,15 @@ bool IntervalBounds::taylorProves(const SearchSample& from, const SearchSample& 
   const double w = b.t - a.t;
   if (std::max(N.z, curve_.carry(N, from.t, from.t == a.t ? b.t : a.t).z) + omega_ * w >= 0)
     return false;
+  return carriedPlanePositive(from, a, b, z);
+}
+
+// The Taylor form of 2d for any unit N carried with the cutter from `from` (normal, hOwn,
+// dn, ddn set): whether g(t) = N(t).(Q - tip(t)) - hOwn > 0 on [a.t, b.t], Q = (x, y, z).
+bool IntervalBounds::carriedPlanePositive(const SearchSample& from, const SearchSample& a,
+                                          const SearchSample& b, double z) const {
+  const Vec3& N = from.normal;
+  const double w = b.t - a.t;
   const Vec3 q = Vec3{x_, y_, z} - from.tip;
   const double g0 = dot(N, q) - from.hOwn, g1 = dot(from.dn, q) - dot(N, from.vel);
   const double D = distanceBound(a, b, z, z);
@@ -223,6 +239,49 @@ bool IntervalBounds::taylorProves(const SearchSample& from, const SearchSample& 
   double low = std::min(g0 + g1 * ta + 0.5 * m * ta * ta, g0 + g1 * tb + 0.5 * m * tb * tb);
   if (m > 0 && -g1 / m > ta && -g1 / m < tb) low = std::min(low, g0 - 0.5 * g1 * g1 / m);
   return low > 1e-13 * (1 + D);
+}
+
+// Step 2e. Every cutter lies in {a.(p - tip) <= L} (below its flute top) and, for any
+// unit n across its axis, in {n.(p - tip) <= R} (its flank's cylinder), both carried
+// with the cutter. Where, at the middle tc of I, the line crosses the top's plane
+// outside the flank (rho > R there) and n, the direction across the axis to that
+// crossing, points down (n.z < 0), pick h between the crossing and the height where
+// the line leaves n's half-space. If for every t in I both
+//     g_top(t) = a(t).(Q - tip(t)) - L > 0  and  g_flank(t) = n(t).(Q - tip(t)) - R > 0
+// for Q = (x, y, h), with a_z > 0 and n_z < 0 over I (each within omega w of its value
+// at tc), then the line's points at z >= h lie above the top (a.(Q(z) - tip) grows with
+// z) and those at z <= h outside the flank (n.(Q(z) - tip) falls as z rises): the line
+// misses K(t). Each g is the cutter-fixed plane of 2b/2d with N = a, h = L or N = n,
+// h = R, proven by 2d's Taylor form at tc: first order exact, so that near the t where
+// the line first touches the top's rim the intervals it proves shrink only with the
+// square root of their distance from it, where the grown cutter's (first order) shrink
+// in proportion, and the search ran out of samples there.
+bool IntervalBounds::missesBesideFluteTop(const SearchSample& a, const SearchSample& b) const {
+  if (c_.general()) return false;
+  const double w = b.t - a.t, tc = 0.5 * (a.t + b.t);
+  SearchSample m;
+  m.t = tc, m.tip = curve_.tip(tc), m.axis = curve_.axis(tc);
+  m.vel = curve_.tipVelocity(tc), m.acc = curve_.tipAcceleration(tc);
+  const Vec3& axis = m.axis;
+  if (!(w > 0) || !(axis.z - omega_ * w > 0)) return false;
+  const double L = c_.fluteLength, R = c_.radius;
+  const double wx = x_ - m.tip.x, wy = y_ - m.tip.y;
+  const Vec3 atTop{wx, wy, (L - axis.x * wx - axis.y * wy) / axis.z};  // from the tip
+  const Vec3 across = atTop - axis * dot(atTop, axis);
+  const double rho = length(across);
+  if (!(rho > R)) return false;
+  const Vec3 n = across / rho;
+  if (!(n.z + omega_ * w < 0)) return false;
+  const double zFlank = (R - n.x * wx - n.y * wy) / n.z;  // above atTop.z: rho > R
+  const double h = m.tip.z + 0.5 * (atTop.z + zFlank);
+  const Vec3 spin = curve_.spin(tc), spinRate = curve_.spinRate(tc);
+  for (const auto& plane : {std::make_pair(axis, L), std::make_pair(n, R)}) {
+    m.normal = plane.first, m.hOwn = plane.second;
+    m.dn = cross(spin, m.normal);
+    m.ddn = cross(spinRate, m.normal) + cross(spin, m.dn);
+    if (!carriedPlanePositive(m, a, b, h)) return false;
+  }
+  return true;
 }
 
 }  // namespace scallop

@@ -68,9 +68,15 @@ class IntervalBounds {
   // Taylor form at `from` (a, b or any sample inside).
   bool taylorProves(const SearchSample& from, const SearchSample& a, const SearchSample& b,
                     double z) const;
+  // Step 2e: whether the line provably misses every K(t), t in [a.t, b.t], passing beside
+  // the flank below the flute top's plane and above that plane inside the flank's
+  // extension (ball, flat and bull cutters; false proves nothing).
+  bool missesBesideFluteTop(const SearchSample& a, const SearchSample& b) const;
 
  private:
   double thirdDerivative(double D, const Vec3& N) const;
+  bool carriedPlanePositive(const SearchSample& from, const SearchSample& a, const SearchSample& b,
+                            double z) const;
   double distanceBound(const SearchSample& a, const SearchSample& b, double zLow,
                        double zHigh) const;
 

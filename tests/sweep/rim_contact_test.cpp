@@ -791,10 +791,7 @@ TEST(RimContact, SweptMoveAgreesWithBruteForceNearCamLikeEdges) {
     for (int q = 0; q < 2; ++q) {
       double x, y;
       edgeLine(c, 2 * kPi * u(rng), c.cutter.radius * (q == 0 ? 1e-2 : 1e-4), x, y);
-      // Searches that run out of samples are counted, not failed, here: a known open
-      // defect (DISABLED_ test below) that predates the rim contact. Their heights are
-      // still checked against the reference like every other.
-      compareKernel(c, move, x, y, st, /*requireProof=*/false);
+      compareKernel(c, move, x, y, st);
     }
   }
   printKernel("near CAM-like edges", st);
@@ -802,17 +799,15 @@ TEST(RimContact, SweptMoveAgreesWithBruteForceNearCamLikeEdges) {
   EXPECT_GE(st.hits, 30);
 }
 
-// KNOWN OPEN DEFECT, disabled so that it shows in every run as a disabled test: a line
-// near the footprint's edge whose lowest point is on the flank (t = 0.282) exhausts the
-// certified search's 1 024 samples before its proof closes. Its height is right (within
-// 2.5e-10 mm of the reference), but unproven. Traced (stop 40): the line meets the cutter
-// only for t in (0.28201210, 0.38), leaving it through the flute top, and f is lowest
-// where it leaves; for t below that the line misses, but the grown cutter's bound and
-// the ray clearance treat the flank as if it went on above the flute top, so they prove
-// the miss only on intervals whose width shrinks with their distance from the exit: ~30
-// such intervals stay open at once and the budget runs out. A bound that sees the flute
-// top (the top cap's plane, or the rim circle's distance from the line) would close it.
-TEST(RimContact, DISABLED_FlankLineNearTheEdgeClosesItsProof) {
+// A line near the footprint's edge whose lowest point is on the flank (t = 0.282), where
+// the line first touches the flute top's rim: it meets the cutter only for t in
+// (0.28201210, 0.38), leaving it through the flute top. For t below that it misses, but
+// the grown cutter and the ray clearance see the flank as if it went on above the flute
+// top, so they proved the miss only on intervals whose width shrank in proportion to
+// their distance from the touch: the search ran out of its 1 024 samples with its height
+// right (2.5e-10 mm from the reference) but unproven. The flute top's bound
+// (interval_bounds.cpp step 2e) closes it.
+TEST(RimContact, FlankLineNearTheEdgeClosesItsProof) {
   Cutter cutter =
       Cutter::make(CutterType::Bull, 2.3652465323973457, 1.123682671710263, 6.3833612668695023);
   const PoseCurve curve =
