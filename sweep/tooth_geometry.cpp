@@ -74,6 +74,13 @@ double profileArcLength(double bottomRadius, double cornerRadius, double h, doub
   return rb + r * kPi / 2 + (h - r);                                      // the flank
 }
 
+double profileRadiusAt(double bottomRadius, double cornerRadius, double u) {
+  const double rb = bottomRadius, r = cornerRadius;
+  if (u <= rb) return u;
+  if (u < rb + r * kPi / 2) return rb + r * std::sin((u - rb) / r);
+  return rb + r;
+}
+
 void checkEdgeSpans(const std::vector<EdgeSpan>& spans, int flutes, double edgeLength,
                     const std::string& field, bool perTooth) {
   if (spans.empty()) return;

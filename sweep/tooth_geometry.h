@@ -34,6 +34,9 @@ struct EdgeSpan {
 // corner radius `cornerRadius`) from the axis to its point at height h above the tip
 // and radius rho from the axis, mm.
 double profileArcLength(double bottomRadius, double cornerRadius, double h, double rho);
+// The radius from the axis of that profile's point at arc length u (its inverse's
+// radius), mm: non-decreasing in u.
+double profileRadiusAt(double bottomRadius, double cornerRadius, double u);
 
 // Validates the tool key "edge_span" (one span for every tooth) or "tooth_edge_spans"
 // (one per flute): each within [0, edgeLength] (the profile's whole arc length), from <

@@ -55,6 +55,11 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
       g.flutes = n;
       g.spanned = spanned;
       g.span = span;
+      if (spanned) {
+        const double rb = cutter.bottomRadius(), r = cutter.cornerRadius;
+        g.spanRadiusMin = profileRadiusAt(rb, r, span.from) + o.radial;
+        g.spanRadiusMax = profileRadiusAt(rb, r, span.to) + o.radial;
+      }
       groups.push_back(g);
       it = groups.end() - 1;
     }

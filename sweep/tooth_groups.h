@@ -24,6 +24,8 @@ struct ToothGroup {
   double leaf = 0;            // the shortest interval halved where the faces agree, in t
   bool spanned = false;       // the teeth's edges cover `span` only
   EdgeSpan span;              // of the nominal profile (before the radial offset)
+  // The radii from the axis between which the span's points lie (with the offset), mm.
+  double spanRadiusMin = 0, spanRadiusMax = 0;
 
   // Whether F = f is one of the roots modulo flutes.
   bool isRoot(double f) const;

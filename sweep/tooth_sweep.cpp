@@ -139,6 +139,7 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
   runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
   tipSpeed_ = curve_.tipSpeedBound();
   translates_ = curve_.constantAxis() && curve_.linearTip();
+  vertical_ = translates_ && axisStart_.x == 0 && axisStart_.y == 0 && axisStart_.z == 1;
   drop_ = cutter_.teeth.axialReach();
   if (drop_ > 0 && !translates_)
     throw InputError("tool.tooth_offsets",
@@ -359,6 +360,20 @@ double ToothSweep::envelopeBound(const Group& g, Sample& a, Sample& b, double x,
              : -HUGE_VAL;
 }
 
+// Whether, with a vertical axis, the line stays off the ring of radii where the group's
+// span lies over [a.t, b.t]: the line is then parallel to the axis, so every point of
+// the solid on it is at its horizontal distance d from the cutter's own axis, and d moves
+// by at most v = |tip'| + runout |phi'| per unit t, so it stays within
+// (d_a + d_b -+ v w) / 2. Culls a face mill's stretches over its non-cutting bottom.
+bool ToothSweep::offSpanRing(const Group& g, const Sample& a, const Sample& b, double x,
+                             double y) const {
+  const double da = std::hypot(x - a.T.x, y - a.T.y), db = std::hypot(x - b.T.x, y - b.T.y);
+  const double vw = (tipSpeed_ + cutter_.teeth.runout * std::abs(phaseRate_)) * (b.t - a.t);
+  const double margin = 1e-9 * (1 + cutter_.radius);
+  return 0.5 * (da + db + vw) < g.spanRadiusMin - margin ||
+         0.5 * (da + db - vw) > g.spanRadiusMax + margin;
+}
+
 // Solves F(t) - F(a) = target between a and b (0 < target <= F(b) - F(a), a and b in
 // either order of t) for one side, and keeps the crossing if it is the lowest so far.
 // Regula falsi with the Illinois rule: F is nearly linear in t (the spindle turns at a
@@ -410,6 +425,7 @@ void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
 void ToothSweep::scanInterval(const Group& g, Sample& a, Sample& b, double x, double y, int depth,
                               Crossing& best) const {
   if (envelopeBound(g, a, b, x, y, best.z) >= best.z) return;
+  if (g.spanned && vertical_ && offSpanRing(g, a, b, x, y)) return;
   // Where the exit points are proven no lower than the best (exitBound), only the entry
   // points are searched.
   const int sides = exitBound(g, a, b, x, y) >= best.z ? 1 : 2;
