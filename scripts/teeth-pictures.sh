@@ -7,10 +7,12 @@
 # exaggeration:
 #     docs/images/teeth-window.png      the feed marks (0.42 um deep, 0.1 mm apart)
 #     docs/images/envelope-window.png   the same window without them
+#     docs/images/face-mill-inserts.png examples/face_mill_inserts.json: a face mill's
+#                                       round inserts, one 9 um lower (docs/teeth.md)
 # The two job files are written below (teeth-window.json, envelope-window.json) and
 # kept with the outputs when OUT=DIR is given; otherwise in a temporary folder.
 # Usage: scripts/teeth-pictures.sh  (SCALLOP=path/to/scallop to use another binary;
-# the default is ./build/scallop). About 6 s on 2 cores; each picture is ~20 KB.
+# the default is ./build/scallop). About 12 s on 2 cores; each picture is ~20 KB.
 set -eu
 cd "$(dirname "$0")/.."
 scallop=${SCALLOP:-./build/scallop}
@@ -54,4 +56,9 @@ shade "$out/teeth-window/heights.gsf" docs/images/teeth-window.png \
   "teeth: ball R3, lead 15°, 2 flutes, fz 0.1 mm, 2 µm cells"
 shade "$out/envelope-window/heights.gsf" docs/images/envelope-window.png \
   "envelope: the same passes, swept solid of revolution"
-ls -l docs/images/teeth-window.png docs/images/envelope-window.png
+# The face mill with two round inserts, one 9 um lower (examples/face_mill_inserts.json).
+"$scallop" simulate examples/face_mill_inserts.json -o "$out/face-mill-inserts" >/dev/null
+shade "$out/face-mill-inserts/heights.gsf" docs/images/face-mill-inserts.png \
+  "face mill R10, 2 round inserts ri 5 (one 9 µm lower), fz 0.4 mm, 4 µm cells"
+ls -l docs/images/teeth-window.png docs/images/envelope-window.png \
+  docs/images/face-mill-inserts.png

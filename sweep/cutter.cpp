@@ -148,6 +148,17 @@ double CutterTeeth::axialReach() const {
   return most;
 }
 
+double Cutter::edgeLength() const {
+  if (!general()) return bottomRadius() + cornerRadius * kPi / 2 + (fluteLength - cornerRadius);
+  double sum = 0;
+  for (const ProfileSegment& g : profile->segments()) {
+    const double chord = std::hypot(g.rho1 - g.rho0, g.s1 - g.s0);
+    sum += g.arcRadius > 0 ? 2 * g.arcRadius * std::asin(std::min(1.0, chord / (2 * g.arcRadius)))
+                           : chord;
+  }
+  return sum;
+}
+
 Cutter Cutter::spindleEnvelope() const {
   const double out = teeth.runout + teeth.radialReach();
   if (out <= 0) return *this;

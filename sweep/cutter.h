@@ -49,6 +49,8 @@ CutterType parseCutterType(const std::string& name, const std::string& field = "
 //   * Per tooth (tooth_geometry.h): body angles other than 2 pi k / flutes (unequal
 //     pitch, `tooth_angles_deg`) and each edge moved radially and axially
 //     (`tooth_offsets`); runout composes with them.
+//   * Edges on a span of the profile (`edge_span`, `tooth_edge_spans`, EdgeSpan): an
+//     insert covers part of the profile only, the body behind the rest not cutting.
 struct CutterTeeth {
   int flutes = 2;
   double helixDeg = 0;                    // beta, degrees, in [0, 60]
@@ -56,6 +58,7 @@ struct CutterTeeth {
   double runoutPhaseDeg = 0;              // degrees, any finite angle
   std::vector<double> toothAnglesDeg;     // one per flute; empty: 360 k / flutes
   std::vector<ToothOffset> toothOffsets;  // one per flute; empty: none
+  std::vector<EdgeSpan> edgeSpans;        // one per flute; empty: every edge whole
 
   // Tooth k's body angle psi_k, radians.
   double toothAngle(int k) const;
@@ -86,6 +89,9 @@ struct Cutter {
                      double fluteLength = 0, const std::string& fieldPrefix = "tool");
 
   double bottomRadius() const { return radius - cornerRadius; }  // Rb, mm
+  // The profile's arc length from the axis at the tip to the flute top, mm: the length
+  // of a whole edge (EdgeSpan's parameter).
+  double edgeLength() const;
 
   CutterTeeth teeth;  // read by the "teeth" cutting model only
 

@@ -1,7 +1,10 @@
 #include "sweep/tooth_geometry.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 
 namespace scallop {
@@ -59,6 +62,41 @@ void checkToothGeometry(const std::vector<double>& anglesDeg,
                            " mm carries the edge across the axis (give the other teeth "
                            "positive offsets instead), got " +
                            mm(o.radial));
+  }
+}
+
+double profileArcLength(double bottomRadius, double cornerRadius, double h, double rho) {
+  const double rb = bottomRadius, r = cornerRadius;
+  // The flat bottom (h = 0 to round-off; on a flat end mill the flank's foot has
+  // rho = rb too, and there both forms agree).
+  if (rho <= rb && h <= 1e-12 * (1 + rb)) return rho;
+  if (h < r) return rb + r * std::atan2(std::max(0.0, rho - rb), r - h);  // the corner
+  return rb + r * kPi / 2 + (h - r);                                      // the flank
+}
+
+double profileRadiusAt(double bottomRadius, double cornerRadius, double u) {
+  const double rb = bottomRadius, r = cornerRadius;
+  if (u <= rb) return u;
+  if (u < rb + r * kPi / 2) return rb + r * std::sin((u - rb) / r);
+  return rb + r;
+}
+
+void checkEdgeSpans(const std::vector<EdgeSpan>& spans, int flutes, double edgeLength,
+                    const std::string& field, bool perTooth) {
+  if (spans.empty()) return;
+  if (perTooth && spans.size() != size_t(flutes))
+    throw InputError(field, "expected " + std::to_string(flutes) +
+                                " (one per flute) [from_mm, to_mm] pairs, got " +
+                                std::to_string(spans.size()));
+  for (size_t k = 0; k < spans.size(); ++k) {
+    const EdgeSpan& s = spans[k];
+    if (!std::isfinite(s.from) || !std::isfinite(s.to) || s.from < 0 || s.to > edgeLength ||
+        !(s.from < s.to))
+      throw InputError(perTooth ? entry(field, k) : field,
+                       "an edge span [from_mm, to_mm] is arc length along the profile from "
+                       "the axis, 0 <= from < to <= " +
+                           mm(edgeLength) + " mm (the whole edge), got [" + mm(s.from) + ", " +
+                           mm(s.to) + "]");
   }
 }
 

@@ -38,7 +38,11 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
   const int n = teeth.flutes;
   for (int k = 0; k < n; ++k) {
     const ToothOffset o = teeth.toothOffset(k);
-    auto same = [&](const ToothGroup& g) { return g.radial == o.radial && g.drop == o.axial; };
+    const bool spanned = !teeth.edgeSpans.empty();
+    const EdgeSpan span = spanned ? teeth.edgeSpans[size_t(k)] : EdgeSpan{};
+    auto same = [&](const ToothGroup& g) {
+      return g.radial == o.radial && g.drop == o.axial && g.span == span;
+    };
     auto it = std::find_if(groups.begin(), groups.end(), same);
     if (it == groups.end()) {
       ToothGroup g;
@@ -49,6 +53,13 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
       g.radial = o.radial;
       g.drop = o.axial;
       g.flutes = n;
+      g.spanned = spanned;
+      g.span = span;
+      if (spanned) {
+        const double rb = cutter.bottomRadius(), r = cutter.cornerRadius;
+        g.spanRadiusMin = profileRadiusAt(rb, r, span.from) + o.radial;
+        g.spanRadiusMax = profileRadiusAt(rb, r, span.to) + o.radial;
+      }
       groups.push_back(g);
       it = groups.end() - 1;
     }
@@ -81,6 +92,22 @@ bool ToothGroup::isRoot(double f) const {
     if (std::floor(q) == q) return true;
   }
   return false;
+}
+
+bool ToothGroup::hasRootIn(double lo, double hi) const {
+  if (everyInteger) return std::ceil(lo) <= hi;
+  const double n = flutes;
+  for (double r : roots)
+    if (r + n * std::ceil((lo - r) / n) <= hi) return true;
+  return false;
+}
+
+// The solid's profile is the nominal one moved out by the radial offset, so its arc
+// length runs `radial` ahead of the nominal edge's.
+bool ToothGroup::onSpan(double h, double rho) const {
+  if (!spanned) return true;
+  const double u = profileArcLength(cutter.bottomRadius(), cutter.cornerRadius, h, rho) - radial;
+  return u >= span.from && u <= span.to;
 }
 
 }  // namespace scallop

@@ -1,6 +1,7 @@
-// The teeth of a cutter grouped by their offsets (tooth_geometry.h): teeth with equal
-// offsets lie on one solid of revolution, and the crossing search (tooth_sweep.cpp)
-// runs once a group, on that solid, for the F values of the group's teeth.
+// The teeth of a cutter grouped by their offsets and edge spans (tooth_geometry.h): teeth
+// with equal offsets lie on one solid of revolution, and the crossing search
+// (tooth_sweep.cpp) runs once a group, on that solid, for the F values of the group's
+// teeth, keeping the points of the solid that lie on the group's span.
 #pragma once
 
 #include <vector>
@@ -21,9 +22,18 @@ struct ToothGroup {
   bool everyInteger = false;  // roots = 0, 1, ..., flutes - 1
   double step = 0;            // the scan step, in t
   double leaf = 0;            // the shortest interval halved where the faces agree, in t
+  bool spanned = false;       // the teeth's edges cover `span` only
+  EdgeSpan span;              // of the nominal profile (before the radial offset)
+  // The radii from the axis between which the span's points lie (with the offset), mm.
+  double spanRadiusMin = 0, spanRadiusMax = 0;
 
   // Whether F = f is one of the roots modulo flutes.
   bool isRoot(double f) const;
+  // Whether a root lies in [lo, hi].
+  bool hasRootIn(double lo, double hi) const;
+  // Whether the point of the group's solid at height h above its tip and radius rho
+  // from the axis lies on the teeth's span (always, without one).
+  bool onSpan(double h, double rho) const;
 };
 
 // The groups of `cutter`'s teeth, deepest-reaching first (their crossings prune the

@@ -30,7 +30,9 @@
 // moved out by dr, the tip lowered by da): teeth with equal offsets form a group, each
 // group is searched as described here on its own solid for the F values of its teeth
 // (F - flutes psi_k / (2 pi) a multiple of flutes; every integer for one group of every
-// tooth at equal pitch), and the groups share the best crossing.
+// tooth at equal pitch), and the groups share the best crossing. Teeth whose edges
+// cover a span of the profile only (inserts) are grouped by their span too, and a
+// piercing point off the span carries no edge, as the top cap carries none.
 //
 // Which intervals matter. Every edge point lies in the spindle envelope (the solid of
 // revolution holding the cutter at every spindle angle), so a crossing at t is no lower
@@ -113,6 +115,7 @@ struct ToothSweep::Sample {
   Vec3 envNormal;
   bool done[2] = {false, false};
   bool hit[2] = {false, false};  // the line meets the cutter at an edge-bearing face
+  bool off[2] = {false, false};  // it meets the solid off the teeth's edge span (z, theta, h set)
   double z[2] = {0, 0};          // E(t).z, X(t).z, mm
   double theta[2] = {0, 0};      // their angles from e1, (-pi, pi]
   double h[2] = {0, 0};          // their heights above the tip along the axis, mm
@@ -136,6 +139,7 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
   runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
   tipSpeed_ = curve_.tipSpeedBound();
   translates_ = curve_.constantAxis() && curve_.linearTip();
+  vertical_ = translates_ && axisStart_.x == 0 && axisStart_.y == 0 && axisStart_.z == 1;
   drop_ = cutter_.teeth.axialReach();
   if (drop_ > 0 && !translates_)
     throw InputError("tool.tooth_offsets",
@@ -248,10 +252,16 @@ void ToothSweep::needSide(const Group& g, Sample& s, int side, double x, double 
   const double h = dot(q, s.a);
   if (h >= g.cutter.fluteLength * (1 - 1e-12)) return;  // the top cap carries no edge
   const Vec3 across = q - h * s.a;
-  s.hit[side] = true;
+  // Off the teeth's edge span the face carries no edge either: a span's end is an end of
+  // the face, found as the others are (halving to kMinInterval), but F runs on across it
+  // (scanInterval: a root there is the edge's end crossing the line).
+  const bool on = !g.spanned || g.onSpan(h, length(across));
+  s.hit[side] = on;
+  s.off[side] = !on;
   s.z[side] = lp.z + T.z;
   s.h[side] = h;
   s.theta[side] = std::atan2(dot(across, s.e2), dot(across, s.e1));
+  if (!on) return;
   if (side == 0) s.normal0 = lp.normal;
 }
 
@@ -350,6 +360,20 @@ double ToothSweep::envelopeBound(const Group& g, Sample& a, Sample& b, double x,
              : -HUGE_VAL;
 }
 
+// Whether, with a vertical axis, the line stays off the ring of radii where the group's
+// span lies over [a.t, b.t]: the line is then parallel to the axis, so every point of
+// the solid on it is at its horizontal distance d from the cutter's own axis, and d moves
+// by at most v = |tip'| + runout |phi'| per unit t, so it stays within
+// (d_a + d_b -+ v w) / 2. Culls a face mill's stretches over its non-cutting bottom.
+bool ToothSweep::offSpanRing(const Group& g, const Sample& a, const Sample& b, double x,
+                             double y) const {
+  const double da = std::hypot(x - a.T.x, y - a.T.y), db = std::hypot(x - b.T.x, y - b.T.y);
+  const double vw = (tipSpeed_ + cutter_.teeth.runout * std::abs(phaseRate_)) * (b.t - a.t);
+  const double margin = 1e-9 * (1 + cutter_.radius);
+  return 0.5 * (da + db + vw) < g.spanRadiusMin - margin ||
+         0.5 * (da + db - vw) > g.spanRadiusMax + margin;
+}
+
 // Solves F(t) - F(a) = target between a and b (0 < target <= F(b) - F(a), a and b in
 // either order of t) for one side, and keeps the crossing if it is the lowest so far.
 // Regula falsi with the Illinois rule: F is nearly linear in t (the spindle turns at a
@@ -401,6 +425,7 @@ void ToothSweep::keep(const Sample& s, int side, Crossing& best) const {
 void ToothSweep::scanInterval(const Group& g, Sample& a, Sample& b, double x, double y, int depth,
                               Crossing& best) const {
   if (envelopeBound(g, a, b, x, y, best.z) >= best.z) return;
+  if (g.spanned && vertical_ && offSpanRing(g, a, b, x, y)) return;
   // Where the exit points are proven no lower than the best (exitBound), only the entry
   // points are searched.
   const int sides = exitBound(g, a, b, x, y) >= best.z ? 1 : 2;
@@ -432,7 +457,16 @@ void ToothSweep::scanInterval(const Group& g, Sample& a, Sample& b, double x, do
   for (int side = 0; side < sides; ++side) {
     if (!a.hit[side] || !b.hit[side]) {
       // An end of a face inside an interval of 1e-13: a crossing there is at either end.
-      if (a.hit[side] && g.isRoot(absoluteF(a, side))) keep(a, side, best);
+      if (a.hit[side] && g.isRoot(absoluteF(a, side))) {
+        keep(a, side, best);
+      } else if ((a.hit[side] && b.off[side]) || (a.off[side] && b.hit[side])) {
+        // A span's end: F is continuous across it, so a root between the ends' values is
+        // the span's end on the line (a corner of the edge's swept surface, the lowest
+        // point of a round insert's mark): its height is the on-span end's, within the
+        // interval's 1e-13.
+        const double fa = absoluteF(a, side), fb = fa + deltaF(a, b, side);
+        if (g.hasRootIn(std::min(fa, fb), std::max(fa, fb))) keep(a.hit[side] ? a : b, side, best);
+      }
       continue;
     }
     // Without runout X(t).z itself is concave in t (the cutter translates linearly).

@@ -88,6 +88,7 @@ class ToothSweep {
   void frame(double t, Vec3& a, Vec3& e1, Vec3& e2) const;
   Sample pose(double t) const;
   double tangentBelow(const Sample* ref, double t) const;
+  bool offSpanRing(const Group& g, const Sample& a, const Sample& b, double x, double y) const;
   void needEnvelope(const Group& g, Sample& s, double x, double y, const Sample* near1 = nullptr,
                     const Sample* near2 = nullptr) const;
   void needSide(const Group& g, Sample& s, int side, double x, double y,
@@ -124,7 +125,8 @@ class ToothSweep {
   // The cutter translates along a line (constant axis, linear tip): the envelope's
   // height is then convex in t. Not on an arc.
   bool translates_ = false;
-  double reach_ = 0;  // the farthest edge point from the spindle tip, mm
+  bool vertical_ = false;  // translates_ with the axis along +z (a face mill)
+  double reach_ = 0;       // the farthest edge point from the spindle tip, mm
 };
 
 }  // namespace scallop

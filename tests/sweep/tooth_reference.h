@@ -19,6 +19,9 @@
 // about w = a0 x a1 / |a0 x a1| by the angle between them times t, written here with
 // Rodrigues' formula) and phi = phaseStart + phaseRate t.
 //
+// A tooth whose edge covers a span of the profile (CutterTeeth::edgeSpans, [from, to] in
+// this arc length u) has only u in [from, to]: every tooth's u below runs over its span.
+//
 // The search: the lowest z over every k, u in [0, U], t in [0, 1] with P.xy = (x, y),
 // by best-first subdivision of the (u, t) rectangle of each tooth. A cell of half-sizes
 // (du, dt) around its centre c holds no edge point farther than

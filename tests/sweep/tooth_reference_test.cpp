@@ -58,6 +58,7 @@ struct Edges {
   double tipSpeed = 0;
   std::vector<double> psi;        // each tooth's body angle, rad
   std::vector<double> dr, da;     // each tooth's offsets, mm
+  std::vector<double> uLo, uHi;   // each tooth's edge: arc lengths [uLo, uHi] (its span)
   double drMost = 0, daMost = 0;  // their largest sizes
 
   Edges(const Cutter& cutter, const ToothMove& move) : c(cutter), m(move) {
@@ -87,6 +88,11 @@ struct Edges {
     slope = std::tan(beta) / c.radius;
     psiR = c.teeth.runoutPhaseDeg * kPi / 180;
     U = edgeLength(c);
+    for (int k = 0; k < flutes; ++k) {
+      const bool spans = !c.teeth.edgeSpans.empty();
+      uLo.push_back(spans ? c.teeth.edgeSpans[size_t(k)].from : 0);
+      uHi.push_back(spans ? c.teeth.edgeSpans[size_t(k)].to : U);
+    }
     // |dP/du|: the meridian by arc length, and the helix's turn of a point at radius
     // at most R + |dr|max.
     Lu = std::hypot(1.0, (c.radius + drMost) * slope);
@@ -142,7 +148,7 @@ struct Edges {
   }
 
   // Newton (with a backtracking line search, Levenberg-damped) on P(u, t).xy = (x, y)
-  // from (u, t), clamped to [0, U] x [0, 1]. t is scaled by `ts` (mm per unit t) so
+  // from (u, t), clamped to tooth k's [uLo, uHi] x [0, 1]. t is scaled by `ts` (mm per unit t) so
   // both unknowns are lengths.
   bool newton(int k, double x, double y, double ts, double& u, double& t, Vec3& p) const {
     auto resid = [&](double uu, double tt, Vec3& q) {
@@ -168,7 +174,7 @@ struct Edges {
       const double ds = ((a11 + mu) * g2 - a12 * g1) / det;
       bool improved = false;
       for (double lambda = 1; lambda > 1e-9; lambda *= 0.5) {
-        const double un = std::clamp(u + lambda * du, 0.0, U);
+        const double un = std::clamp(u + lambda * du, uLo[size_t(k)], uHi[size_t(k)]);
         const double tn = std::clamp(t + lambda * ds / ts, 0.0, 1.0);
         Vec3 q;
         const double rn = resid(un, tn, q);
@@ -244,11 +250,13 @@ ToothHit toothLowest(const Cutter& c, const ToothMove& m, double x, double y, To
   const int nt =
       std::max(1, int(std::ceil(span * std::max({std::fabs(m.phaseRate) / (kPi / 8),
                                                  e.tipSpeed / (0.25 * c.radius), e.turn / 0.05}))));
-  std::vector<double> uCuts{0};
   const double rb = c.bottomRadius(), r = c.cornerRadius;
-  for (double j : {rb, rb + r * kPi / 2, e.U})
-    if (j > uCuts.back()) uCuts.push_back(j);
   for (int k = 0; k < c.teeth.flutes; ++k) {
+    // The tooth's span, cut at the profile's junctions inside it.
+    const double lo = e.uLo[size_t(k)], hi = e.uHi[size_t(k)];
+    std::vector<double> uCuts{lo};
+    for (double j : {rb, rb + r * kPi / 2, hi})
+      if (j > uCuts.back() && j <= hi) uCuts.push_back(j);
     for (size_t s = 1; s < uCuts.size(); ++s) {
       const int nu = std::max(1, int(std::ceil((uCuts[s] - uCuts[s - 1]) / (0.25 * c.radius))));
       for (int i = 0; i < nu; ++i) {
@@ -311,10 +319,13 @@ ToothHit toothLowestDense(const Cutter& c, const ToothMove& m, double x, double 
   if (!e.window(x, y, t0, t1)) return best;
   const double ts = e.Lt(e.U);
   std::vector<double> d(size_t(nu) * size_t(nt));
+  auto uAt = [&](int k, int i) {  // tooth k's span in nu samples
+    return e.uLo[size_t(k)] + (e.uHi[size_t(k)] - e.uLo[size_t(k)]) * i / (nu - 1);
+  };
   for (int k = 0; k < c.teeth.flutes; ++k) {
     for (int i = 0; i < nu; ++i)
       for (int j = 0; j < nt; ++j) {
-        const Vec3 p = e.point(k, e.U * i / (nu - 1), t0 + (t1 - t0) * j / (nt - 1));
+        const Vec3 p = e.point(k, uAt(k, i), t0 + (t1 - t0) * j / (nt - 1));
         d[size_t(i) * nt + j] = std::hypot(p.x - x, p.y - y);
       }
     for (int i = 0; i < nu; ++i)
@@ -326,7 +337,7 @@ ToothHit toothLowestDense(const Cutter& c, const ToothMove& m, double x, double 
           for (int b = std::max(0, j - 1); b <= std::min(nt - 1, j + 1); ++b)
             if (d[size_t(a) * nt + b] < di) minimum = false;
         if (!minimum) continue;
-        double u = e.U * i / (nu - 1), t = t0 + (t1 - t0) * j / (nt - 1);
+        double u = uAt(k, i), t = t0 + (t1 - t0) * j / (nt - 1);
         Vec3 p;
         if (e.newton(k, x, y, ts, u, t, p) && (!best.hit || p.z < best.z))
           best = {true, p.z, t, u, k};

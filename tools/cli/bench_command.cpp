@@ -97,6 +97,9 @@ constexpr const char* kBenchHelp =
     "  B6 (only with --case B6) B3's path with a taper barrel (form R250, tip R2, taper\n"
     "     10 deg), passes as far apart as leaves B3's scallop on a plane, 2 um;\n"
     "  B7 (only with --case B7) B1's raster with a tapered ball (tip R1, taper 5 deg), 1 um;\n"
+    "  B8 (only with --case B8) surf-topo's face-milling case A2: a face mill with two\n"
+    "     round inserts (bull R10 r5, edge_span), one 26 um in and 9 um up, fz 0.4 mm,\n"
+    "     ap 0.4 mm, counter-clockwise, one pass over a 5 x 5 mm stock at 25 um;\n"
     "  B9 (only with --case B9) 10^6 moves: ball R1 finishing G-code over 100 x 50 mm\n"
     "     (--area A: A x A/2), passes 0.1 mm apart, a point every 0.05 mm, 20 um; reports\n"
     "     the scene's build in moves/s and its bytes a move.\n"
@@ -120,8 +123,8 @@ Command addBenchCommand(CLI::App& parent, CommonOptions& common) {
   app->add_flag("--json", *json, "Print one JSON document on stdout (and nothing else there)");
   app->add_flag("--quick", args->quick, "10x coarser grid spacing (10 um and 20 um): CI-friendly");
   app->add_option("--case", args->cases,
-                  "Run only this case (B1, B2, B3, B3c, B4, B5, B6, B7, B9); may be repeated")
-      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B9"}));
+                  "Run only this case (B1, B2, B3, B3c, B4, B5, B6, B7, B8, B9); may be repeated")
+      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B8", "B9"}));
   app->add_option("--area", args->area, "Square stock of this side, mm, instead of 20 mm")
       ->check(CLI::PositiveNumber);
   app->add_option("--stamp-window", args->stampWindow,

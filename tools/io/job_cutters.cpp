@@ -1,5 +1,6 @@
 #include "tools/io/job_cutters.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -20,6 +21,41 @@ double arrayNumber(const json& v, const std::string& field, const char* expected
   if (!v.is_number())
     throw InputError(field, std::string("expected ") + expected + ", got " + v.dump());
   return v.get<double>();
+}
+
+// A [from_mm, to_mm] pair at `field`.
+EdgeSpan spanPair(const json& v, const std::string& field) {
+  if (!v.is_array() || v.size() != 2)
+    throw InputError(field,
+                     "expected a pair [from_mm, to_mm] (arc length along the profile "
+                     "from the axis), got " +
+                         v.dump());
+  return {arrayNumber(v[0], field + "[0]", "an arc length in mm"),
+          arrayNumber(v[1], field + "[1]", "an arc length in mm")};
+}
+
+// "edge_span": [from_mm, to_mm] (every tooth) or "tooth_edge_spans": [[from_mm, to_mm],
+// ...] (one per flute), not both; stored one per flute (tooth_geometry.h checks them).
+void parseEdgeSpans(const json& tool, const std::string& f, Cutter& cutter) {
+  CutterTeeth& teeth = cutter.teeth;
+  const bool one = tool.contains("edge_span"), each = tool.contains("tooth_edge_spans");
+  if (one && each)
+    throw InputError(f + ".tooth_edge_spans",
+                     "give edge_span (every tooth) or tooth_edge_spans (one per flute), not both");
+  if (one) {
+    const std::string field = f + ".edge_span";
+    const EdgeSpan span = spanPair(tool.at("edge_span"), field);
+    checkEdgeSpans({span}, teeth.flutes, cutter.edgeLength(), field, false);
+    teeth.edgeSpans.assign(size_t(teeth.flutes), span);
+  } else if (each) {
+    const std::string field = f + ".tooth_edge_spans";
+    const json& a = tool.at("tooth_edge_spans");
+    if (!a.is_array())
+      throw InputError(field, "expected an array of [from_mm, to_mm] pairs, one per flute");
+    for (size_t k = 0; k < a.size(); ++k)
+      teeth.edgeSpans.push_back(spanPair(a[k], field + "[" + std::to_string(k) + "]"));
+    checkEdgeSpans(teeth.edgeSpans, teeth.flutes, cutter.edgeLength(), field, true);
+  }
 }
 
 // "tooth_angles_deg": [deg, ...] and "tooth_offsets": [[radial_mm, axial_mm], ...], one
@@ -51,13 +87,15 @@ void parseToothGeometry(const json& tool, const std::string& f, Cutter& cutter) 
   }
   checkToothGeometry(teeth.toothAnglesDeg, teeth.toothOffsets, teeth.flutes, cutter.radius,
                      cutter.bottomRadius(), f);
+  parseEdgeSpans(tool, f, cutter);
 }
 
 }  // namespace
 
 Cutter parseCutter(const json& tool, const std::string& f) {
   static const std::set<std::string> teethKeys = {
-      "flutes", "helix_deg", "runout_mm", "runout_phase_deg", "tooth_angles_deg", "tooth_offsets"};
+      "flutes",           "helix_deg",     "runout_mm", "runout_phase_deg",
+      "tooth_angles_deg", "tooth_offsets", "edge_span", "tooth_edge_spans"};
   const std::string typeName = text(tool, "type", f + ".type");
   Cutter cutter;
   if (shapedCutterTypeNames().count(typeName)) {
@@ -161,6 +199,16 @@ json cutterToJson(const Cutter& c) {
     json offsets = json::array();
     for (const ToothOffset& o : c.teeth.toothOffsets) offsets.push_back({o.radial, o.axial});
     j["tooth_offsets"] = offsets;
+  }
+  const std::vector<EdgeSpan>& spans = c.teeth.edgeSpans;
+  if (!spans.empty()) {
+    if (std::all_of(spans.begin(), spans.end(), [&](const EdgeSpan& e) { return e == spans[0]; })) {
+      j["edge_span"] = {spans[0].from, spans[0].to};
+    } else {
+      json each = json::array();
+      for (const EdgeSpan& e : spans) each.push_back({e.from, e.to});
+      j["tooth_edge_spans"] = each;
+    }
   }
   // A general cutter's solid is its profile: echoed, so a report says what was swept.
   if (c.general()) j["segments"] = profileSegmentsToJson(*c.profile);

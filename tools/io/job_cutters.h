@@ -15,7 +15,8 @@
 namespace scallop {
 
 // {"type", "radius", "corner_radius", "flute_length", "flutes", "helix_deg",
-// "runout_mm", "runout_phase_deg", "tooth_angles_deg", "tooth_offsets"} at field path
+// "runout_mm", "runout_phase_deg", "tooth_angles_deg", "tooth_offsets", "edge_span",
+// "tooth_edge_spans"} at field path
 // `field` ("tool", "tools.2"). The
 // teeth keys default to CutterTeeth's (2 flutes, no helix, no runout) and are checked
 // by CutterTeeth::make, whose messages name `field`.flutes and so on.

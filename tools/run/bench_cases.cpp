@@ -21,6 +21,7 @@ namespace {
 constexpr double kStockSide = 20;        // mm, the standard cases' stock
 constexpr double kQuickTeethSide = 4;    // mm, B5's stock with --quick
 constexpr double kFinishingWidth = 100;  // mm, B9's stock (x; y is half of it)
+constexpr double kFaceMillSide = 5;      // mm, B8's stock: surf-topo's case A2's grid
 
 RasterSpec b1Raster() {
   RasterSpec spec;
@@ -71,7 +72,7 @@ double b6PassGap(const Cutter& barrel) {
 
 const std::vector<std::string>& benchCaseNames() {
   static const std::vector<std::string> names{"B1", "B2", "B3", "B3c", "B4",
-                                              "B5", "B6", "B7", "B9"};
+                                              "B5", "B6", "B7", "B8",  "B9"};
   return names;
 }
 
@@ -190,6 +191,44 @@ ToolPath makeFreeformPath(const Cutter& cutter, const Box3& stock, double passGa
   return path;
 }
 
+namespace {
+
+// B8, surf-topo's face-milling case A2 (cases/single/config_test_A2.json: Td 10 mm, two
+// round inserts ri 5 mm, fz 0.4 mm, ap 0.4 mm, the second insert's errors eps_r -26 um
+// and eps_a 9 um, its tool starting at (5, -5) and feeding along +y, tooth 1 at 90 deg,
+// a 5 x 5 mm grid of 200 steps): the inserts' lowest points on a 10 mm circle (bull R 10,
+// r 5, the corner arc its edge), the second insert 26 um nearer the axis and 9 um higher
+// (surf-topo adds eps_a to the edge's z), the spindle counter-clockwise seen from above
+// as surf-topo turns it, one pass over the grid from a cutter radius before it to one
+// past it.
+void b8FaceMill(BenchCase& b, double side, double coarse) {
+  const double ri = 5, rb = 5;
+  b.cutter = Cutter::make(CutterType::Bull, rb + ri, ri, 6);
+  b.cutter.teeth = CutterTeeth::make(2, 0, 0, 0, b.cutter.radius);
+  b.cutter.teeth.edgeSpans.assign(2, EdgeSpan{rb, rb + ri * kPi / 2});
+  b.cutter.teeth.toothOffsets = {{0, 0}, {-0.026, -0.009}};
+  b.stock.extend({0, 0, -2});
+  b.stock.extend({side, side, 0});
+  const Vec3 axis{0, 0, 1};
+  const double r = b.cutter.radius;
+  Move pass;
+  pass.from = {{side, -r - 1, -0.4}, axis};
+  pass.to = {{side, side + r + 1, -0.4}, axis};
+  b.path.moves.push_back(pass);
+  b.grid = gridCovering(0, 0, side, side, 0.025 * coarse);
+  b.cutting.kind = CuttingModelKind::Teeth;
+  b.cutting.feedPerTooth = 0.4;
+  b.cutting.counterClockwise = true;
+  // surf-topo's first edge points at gamma_f - phi = 0.6 - 90 deg from +x; counter-
+  // clockwise, scallop's body angle 0 points at phi0 from +x (tooth_sweep.h).
+  b.cutting.phaseDeg = 0.6 - 90;
+  b.description =
+      "surf-topo's face mill A2: bull R10 r5, 2 round inserts (edge_span), one -26/+9 um, "
+      "fz 0.4 mm, ap 0.4 mm, CCW, 25 um";
+}
+
+}  // namespace
+
 BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options) {
   if (!(options.area >= 0) || !std::isfinite(options.area) ||
       (options.area > 0 && options.area < 0.1))
@@ -255,6 +294,8 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
     b.grid =
         gridCovering(b.stock.min.x, b.stock.min.y, b.stock.max.x, b.stock.max.y, 0.01 * coarse);
     b.description = "mount_rush ball R3 drop-cutter raster (OpenCAMLib), 3-axis CAM output";
+  } else if (name == "B8") {
+    b8FaceMill(b, options.area > 0 ? options.area : kFaceMillSide, coarse);
   } else if (name == "B9") {
     // A 100 x 50 mm freeform part (--area A: A x A/2) finished with a ball R1: about 10^6
     // G1 lines, read through the G-code reader as a user's file would be (the reading is
@@ -270,8 +311,8 @@ BenchCase makeBenchCase(const std::string& name, const BenchCaseOptions& options
     b.grid = gridCovering(0, 0, width, 0.5 * width, 0.02 * coarse);
     b.description = "ball R1 finishing G-code, passes 0.1 mm apart, a point every 0.05 mm";
   } else {
-    throw InputError(
-        "--case", "unknown case \"" + name + "\"; expected B1, B2, B3, B3c, B4, B5, B6, B7 or B9");
+    throw InputError("--case", "unknown case \"" + name +
+                                   "\"; expected B1, B2, B3, B3c, B4, B5, B6, B7, B8 or B9");
   }
   return b;
 }

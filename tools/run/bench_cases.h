@@ -16,13 +16,13 @@
 namespace scallop {
 
 struct BenchCase {
-  std::string name;         // "B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B9"
+  std::string name;         // "B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B8", "B9"
   std::string description;  // one line for people
   Cutter cutter;
   Box3 stock;
   GridSpec grid;
   ToolPath path;
-  CuttingModel cutting;  // B5: teeth; the others: the envelope
+  CuttingModel cutting;  // B5, B8: teeth; the others: the envelope
 };
 
 struct BenchCaseOptions {
@@ -30,10 +30,12 @@ struct BenchCaseOptions {
   double area = 0;     // > 0: a square stock of this side, mm, instead of 20 x 20 mm
 };
 
-// "B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B9" in the order they are reported.
+// "B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B8", "B9" in the order they are
+// reported.
 const std::vector<std::string>& benchCaseNames();
 // The cases a bench without --case runs: B1 to B5 (B6 and B7, the general-profile
-// cutters, and B9, 10^6 moves, run only when asked for: CI's quick bench keeps its time).
+// cutters, B8, the face mill, and B9, 10^6 moves, run only when asked for: CI's quick
+// bench keeps its time).
 const std::vector<std::string>& defaultBenchCaseNames();
 
 // Throws InputError (field "--case" / "--area") for an unknown name or a bad area.
@@ -56,6 +58,10 @@ const std::vector<std::string>& defaultBenchCaseNames();
 //      bull at 0.5 mm on a plane at that lead (analysis/pass_section.h); 2 um.
 //  B7: B1's raster with a tapered ball (tip radius 1 mm, taper 5 deg per side, flute
 //      length 12 mm); 1 um.
+//  B8: surf-topo's face-milling case A2 (issue 35; b8FaceMill in the .cpp): a face mill
+//      with two round inserts (bull R 10, r 5, edge_span the corner arc), the second
+//      insert 26 um nearer the axis and 9 um higher, fz 0.4 mm, ap 0.4 mm, CCW, one pass
+//      along +y at x = 5 over a 5 x 5 mm stock (--area A: A x A) at 25 um (4e4 cells).
 //  B9: a program of 10^6 moves (issue 37): ball R1 finishing a 100 x 50 mm stock (--area A:
 //      A x A/2 mm), passes along X 0.1 mm apart with a point every 0.05 mm on
 //      finishingHeight, written by finishingGcode and read through the G-code reader;

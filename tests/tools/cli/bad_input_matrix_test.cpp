@@ -282,7 +282,7 @@ TEST_F(BadInputMatrix, CommandLineOptions) {
        1,
        {"/proc/scallop-bad.stl"}},
       {"bench: zero area", {}, "bench --area 0", 2, {"--area"}},
-      {"bench: unknown case", {}, "bench --case B8", 2, {"--case"}},
+      {"bench: unknown case", {}, "bench --case B10", 2, {"--case"}},
       {"merge: missing folder", {}, "merge @/none", 1, {"@/none"}},
       {"merge: folder without bands", {{"d/readme", "x"}}, "merge @/d", 1, {"@/d"}},
       {"validate: unwritable output",

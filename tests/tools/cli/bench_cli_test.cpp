@@ -44,7 +44,7 @@ TEST_F(BenchCli, TableOnStdoutAndUsageErrors) {
   ASSERT_EQ(table.status, 0);
   EXPECT_NE(table.out.find("Mcells/s"), std::string::npos) << table.out;
   EXPECT_NE(table.out.find("B3"), std::string::npos) << table.out;
-  EXPECT_EQ(run("bench --case B8").status, 2);
+  EXPECT_EQ(run("bench --case B10").status, 2);
   EXPECT_EQ(run("bench --area -1").status, 2);
 }
 

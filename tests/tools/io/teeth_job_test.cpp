@@ -180,6 +180,44 @@ TEST(TeethJob, ToothGeometryAndSpindleAreReadEchoedAndChecked) {
   refused(R"("helix_deg": 0)", "spindle", R"(, "spindle": 3)");
 }
 
+// Edge spans: "edge_span" for every tooth, "tooth_edge_spans" one per flute, echoed as
+// given (one span when all are equal); every wrong shape or value names its field.
+TEST(TeethJob, EdgeSpansAreReadEchoedAndChecked) {
+  const std::string rest = R"("cutting": {"model": "teeth", "feed_per_tooth": 0.4},
+      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
+      "path": {"file": "p.nc"})";
+  auto tool = [](const std::string& keys) {
+    return R"({"tool": {"type": "bull", "radius": 10, "corner_radius": 5, "flute_length": 8,
+        "flutes": 2, )" +
+           keys + "}, ";
+  };
+  const Job one = parseJob(tool(R"("edge_span": [5, 12.85])") + rest + "}", "job.json");
+  ASSERT_EQ(one.cutter.teeth.edgeSpans.size(), 2u);
+  EXPECT_EQ(one.cutter.teeth.edgeSpans[1].from, 5);
+  EXPECT_EQ(one.cutter.teeth.edgeSpans[1].to, 12.85);
+  EXPECT_EQ(jobToJson(one)["tool"]["edge_span"], json::parse("[5, 12.85]"));
+  const Job each =
+      parseJob(tool(R"("tooth_edge_spans": [[5, 12.85], [0, 15]])") + rest + "}", "job.json");
+  EXPECT_EQ(each.cutter.teeth.edgeSpans[1].to, 15);
+  EXPECT_EQ(jobToJson(each)["tool"]["tooth_edge_spans"], json::parse("[[5, 12.85], [0, 15]]"));
+  EXPECT_TRUE(
+      parseJob(tool(R"("helix_deg": 0)") + rest + "}", "job.json").cutter.teeth.edgeSpans.empty());
+  // The whole edge: Rb + r pi / 2 + L - r = 5 + 7.853981... + 3.
+  auto refused = [&](const std::string& keys, const std::string& field) {
+    expectRejected([&] { parseJob(tool(keys) + rest + "}", "job.json"); }, field);
+  };
+  refused(R"("edge_span": [5, 15.86])", "tool.edge_span");
+  refused(R"("edge_span": [-1, 3])", "tool.edge_span");
+  refused(R"("edge_span": [3, 3])", "tool.edge_span");
+  refused(R"("edge_span": [3])", "tool.edge_span");
+  refused(R"("edge_span": [3, "x"])", "tool.edge_span[1]");
+  refused(R"("edge_span": 3)", "tool.edge_span");
+  refused(R"("tooth_edge_spans": [[0, 3]])", "tool.tooth_edge_spans");
+  refused(R"("tooth_edge_spans": [[0, 3], [4, 2]])", "tool.tooth_edge_spans[1]");
+  refused(R"("tooth_edge_spans": [[0, 3], [1, 2, 3]])", "tool.tooth_edge_spans[1]");
+  refused(R"("edge_span": [0, 3], "tooth_edge_spans": [[0, 3], [0, 3]])", "tool.tooth_edge_spans");
+}
+
 class TeethJobFiles : public scallop::test::CliFixture {};
 
 TEST_F(TeethJobFiles, AMoveWithoutFeedPerToothNamesTheFieldAndTheLine) {

@@ -27,7 +27,7 @@ def test_an_exception_in_progress_stops_the_bench():
 
 
 @pytest.mark.parametrize("kw,keyword", [
-    (dict(cases=["B8"]), "cases"),
+    (dict(cases=["B10"]), "cases"),
     (dict(cases=["B1"], area=0.01), "area"),
     (dict(cases=["B1"], area=-1), "area"),
     (dict(cases=["B1"], progress=3), "progress"),

@@ -1,0 +1,228 @@
+// Edges on a span of the profile (EdgeSpan, sweep/tooth_geometry.h): the kernel against
+// the independent reference (tooth_reference.h, its search restricted to each tooth's
+// span) on random moves; the closed form of a round insert's feed marks on a face
+// mill's pass centre line; the arc length of a profile point; the values refused.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "base/constants.h"
+#include "sweep/tool_path_sweep.h"
+#include "sweep/tooth_reference.h"
+#include "sweep/tooth_sweep.h"
+#include "tests/support/input_error_message.h"
+
+namespace scallop {
+namespace {
+
+CuttingModel teethModel(double fz, double phaseDeg, bool ccw = false) {
+  CuttingModel model;
+  model.kind = CuttingModelKind::Teeth;
+  model.feedPerTooth = fz;
+  model.phaseDeg = phaseDeg;
+  model.counterClockwise = ccw;
+  return model;
+}
+
+SweptMove sweepOne(const Cutter& c, const Vec3& p0, const Vec3& p1, const Vec3& a0, const Vec3& a1,
+                   const CuttingModel& model) {
+  ToolPath path;
+  path.moves.push_back(Move{{p0, a0}, {p1, a1}});
+  std::vector<SweptMove> moves = sweepToolPath(c, path, model);
+  EXPECT_EQ(moves.size(), 1u);
+  return std::move(moves[0]);
+}
+
+TEST(ToothSpan, BadSpansNameTheirField) {
+  const double U = 10;
+  expectRejected(
+      [&] {
+        checkEdgeSpans({{-0.1, 2}}, 2, U, "tool.edge_span", false);
+      },
+      "tool.edge_span");
+  expectRejected(
+      [&] {
+        checkEdgeSpans({{1, 10.5}}, 2, U, "tool.edge_span", false);
+      },
+      "tool.edge_span");
+  expectRejected(
+      [&] {
+        checkEdgeSpans({{3, 3}}, 2, U, "tool.edge_span", false);
+      },
+      "tool.edge_span");
+  expectRejected(
+      [&] {
+        checkEdgeSpans({{NAN, 3}}, 2, U, "tool.edge_span", false);
+      },
+      "tool.edge_span");
+  expectRejected(
+      [&] {
+        checkEdgeSpans({{0, 1}}, 2, U, "tool.tooth_edge_spans", true);
+      },
+      "tool.tooth_edge_spans");
+  expectRejected(
+      [&] {
+        checkEdgeSpans({{0, 1}, {4, 2}}, 2, U, "tools.3.tooth_edge_spans", true);
+      },
+      "tools.3.tooth_edge_spans[1]");
+  checkEdgeSpans({{0, 10}, {4, 5}}, 2, U, "tool.tooth_edge_spans", true);
+  // The whole edge of a bull R 2 r 0.5 L 4: Rb + r pi / 2 + L - r.
+  const Cutter bull = Cutter::make(CutterType::Bull, 2, 0.5, 4);
+  EXPECT_NEAR(bull.edgeLength(), 1.5 + 0.25 * kPi + 3.5, 1e-15);
+  EXPECT_NEAR(bull.edgeLength(), ref::edgeLength(bull), 1e-14);
+}
+
+// The arc length of a profile point (the kernel's) is the reference's parameter.
+TEST(ToothSpan, ArcLengthOfAProfilePointIsTheReferences) {
+  for (CutterType type : {CutterType::Ball, CutterType::Bull, CutterType::Flat}) {
+    const Cutter c = Cutter::make(type, 2, 0.7, 3);
+    const double U = ref::edgeLength(c);
+    for (int i = 0; i <= 200; ++i) {
+      const double u = U * i / 200;
+      const ref::EdgeSpot p = ref::edgeSpot(c, u);
+      EXPECT_NEAR(profileArcLength(c.bottomRadius(), c.cornerRadius, p.h, p.rho), u, 1e-12)
+          << toString(type) << " " << u;
+    }
+  }
+}
+
+// Random cutters whose teeth cover spans (corner arcs, flat-bottom rings, flank pieces,
+// one per tooth or shared), with offsets, helix, runout, unequal pitch and either
+// spindle direction, on constant and turning axes (a vertical one included: a face
+// mill), against the reference within 1e-6 mm, hits and misses alike.
+TEST(ToothSpan, SpansAgreeWithTheReference) {
+  std::mt19937_64 rng(3501);
+  std::uniform_real_distribution<double> u(0, 1);
+  const unsigned long long unprovenBefore = ToothSweep::unprovenSearches();
+  int hits = 0, misses = 0;
+  double worst = 0;
+  for (int n = 0; n < 30; ++n) {
+    const CutterType type = n % 3 == 0   ? CutterType::Ball
+                            : n % 3 == 1 ? CutterType::Bull
+                                         : CutterType::Flat;
+    const double R = 1 + u(rng);
+    Cutter c = Cutter::make(type, R, 0.4 * R, 2 * R);
+    const int flutes = 1 + n % 3;
+    c.teeth = CutterTeeth::make(flutes, n % 4 == 2 ? 30 * u(rng) : 0, n % 5 == 1 ? 0.02 * R : 0,
+                                360 * u(rng), R);
+    const bool turns = n % 6 == 5;
+    const double U = c.edgeLength(), rb = c.bottomRadius(), r = c.cornerRadius;
+    for (int k = 0; k < flutes; ++k) {
+      EdgeSpan s;
+      switch ((n + k * (n % 2)) % 4) {
+        case 0:  // the corner arc (a ball's whole arc; a flat end mill's rim and flank foot)
+          s = {rb, std::min(U, rb + std::max(r * kPi / 2, 0.3 * R))};
+          break;
+        case 1:  // an outer ring of the bottom and the corner
+          s = {0.5 * rb, rb + r * kPi / 4 + 0.1 * R};
+          break;
+        case 2:  // a random piece
+          s.from = U * 0.6 * u(rng);
+          s.to = s.from + (U - s.from) * (0.1 + 0.9 * u(rng));
+          break;
+        default:  // from the axis
+          s = {0, rb + 0.5 * r + 0.2 * R};
+      }
+      c.teeth.edgeSpans.push_back(s);
+    }
+    if (n % 2) {
+      for (int k = 0; k < flutes; ++k) {
+        const double radial = type == CutterType::Ball ? 0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
+        const double axial = turns ? -0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
+        c.teeth.toothOffsets.push_back({radial, axial});
+      }
+    }
+    if (n % 4 == 3 && flutes > 1)
+      for (int k = 0; k < flutes; ++k)
+        c.teeth.toothAnglesDeg.push_back(k == 0 ? 0 : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
+    checkEdgeSpans(c.teeth.edgeSpans, flutes, U, "tool.tooth_edge_spans", true);
+    const double tilt = n % 5 == 0 ? 0 : 0.5 * u(rng), az = 2 * kPi * u(rng);
+    const Vec3 a0{std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt)};
+    const Vec3 a1 = turns ? normalize(a0 + Vec3{0.15, -0.1, 0}) : a0;
+    const Vec3 p0{0, 0, 0},
+        p1{0.8 * std::cos(az + 1), 0.8 * std::sin(az + 1), 0.1 * (u(rng) - 0.5)};
+    const double fz = 0.05 + 0.1 * u(rng), phaseDeg = 360 * u(rng);
+    const bool counter = n % 3 == 2;
+    const SweptMove move = sweepOne(c, p0, p1, a0, a1, teethModel(fz, phaseDeg, counter));
+    const ref::ToothMove m{
+        p0, p1, a0, a1, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (flutes * fz), counter};
+    for (int q = 0; q < 4; ++q) {
+      const double t = u(rng), ang = 2 * kPi * u(rng), rho = 1.05 * R * std::sqrt(u(rng));
+      const Vec3 at = p0 + (p1 - p0) * t;
+      const double x = at.x + rho * std::cos(ang), y = at.y + rho * std::sin(ang);
+      const LowestPoint got = move.lowestPoint(x, y);
+      const ref::ToothHit want = ref::toothLowest(c, m, x, y);
+      ASSERT_EQ(got.hit, want.hit) << n << " " << q << " " << got.z << " " << want.z;
+      if (!got.hit) {
+        ++misses;
+        continue;
+      }
+      ++hits;
+      worst = std::max(worst, std::fabs(got.z - want.z));
+      EXPECT_NEAR(got.z, want.z, kHeightToleranceMm) << n << " " << q;
+      // A span's crossing is one of the whole edge's: never below the envelope.
+      EXPECT_GE(got.z, move.envelopeLowestPoint(x, y).z - 1e-9) << n;
+    }
+  }
+  std::printf("ToothSpan random: %d hits, %d misses, worst |kernel - reference| %.3g mm\n", hits,
+              misses, worst);
+  EXPECT_GE(hits, 60);
+  EXPECT_GE(misses, 3);
+  EXPECT_EQ(ToothSweep::unprovenSearches(), unprovenBefore);
+}
+
+// A face mill: bull R = Rb + ri, two round inserts (the corner arc of radius ri only,
+// the flat bottom and the flank not cutting), a vertical axis and a straight pass along
+// X at zero errors. On the pass centre line y = 0 an edge crosses the vertical line at x
+// only when its meridian plane holds x (the tooth points along +X or -X), so the
+// heights there are the corner arcs, one every fz: tooth k points along +X at
+// travel s = k fz + 2 fz n, its arc's bottom then at x = s + Rb (the front) and the
+// other tooth's at s - Rb (the back; with 2 Rb a multiple of fz on the same places).
+// Each arc z = ri - sqrt(ri^2 - d^2) at distance d from its bottom, so the floor is
+// the lower envelope of arcs fz apart: marks of depth ri - sqrt(ri^2 - fz^2 / 4), the
+// sagitta, whose small-fz form is fz^2 / (8 ri). With the whole edge the flat bottom
+// passes over the line: a flat floor.
+TEST(ToothSpan, RoundInsertFeedMarksAreTheSagitta) {
+  const double ri = 3, rb = 5, fz = 0.5;  // 2 Rb = 20 fz
+  Cutter insert = Cutter::make(CutterType::Bull, rb + ri, ri, 5);
+  insert.teeth = CutterTeeth::make(2, 0, 0, 0, insert.radius);
+  Cutter whole = insert;
+  insert.teeth.edgeSpans.assign(2, EdgeSpan{rb, rb + ri * kPi / 2});
+  const Vec3 a{0, 0, 1}, p0{0, 0, 0}, p1{20, 0, 0};
+  const SweptMove spanned = sweepOne(insert, p0, p1, a, a, teethModel(fz, 0));
+  const SweptMove flat = sweepOne(whole, p0, p1, a, a, teethModel(fz, 0));
+  const double sagitta = ri - std::sqrt(ri * ri - fz * fz / 4);
+  double highest = -HUGE_VAL, lowest = HUGE_VAL, worst = 0;
+  for (int i = 0; i <= 40; ++i) {
+    // Two marks, at points of every phase of them (the cusp at i = 10, 30).
+    const double x = 10 + 2 * fz * i / 40 + 1e-7 * (i % 3);
+    const double d = std::fabs(x - fz * std::round(x / fz));
+    const double want = ri - std::sqrt(ri * ri - d * d);
+    const LowestPoint got = spanned.lowestPoint(x, 0);
+    ASSERT_TRUE(got.hit) << x;
+    worst = std::max(worst, std::fabs(got.z - want));
+    EXPECT_NEAR(got.z, want, 1e-9) << x;
+    highest = std::max(highest, got.z);
+    lowest = std::min(lowest, got.z);
+    const LowestPoint floor = flat.lowestPoint(x, 0);
+    ASSERT_TRUE(floor.hit);
+    EXPECT_NEAR(floor.z, 0, 1e-12) << x;
+  }
+  EXPECT_NEAR(highest, sagitta, 1e-9);  // sampled at the cusps
+  EXPECT_NEAR(lowest, 0, 1e-6);
+  // fz^2 / (8 ri) is the sagitta's leading term: the next is fz^4 / (128 ri^3).
+  const double parabola = fz * fz / (8 * ri), next = std::pow(fz, 4) / (128 * std::pow(ri, 3));
+  EXPECT_GT(sagitta - parabola, 0.99 * next);
+  EXPECT_LT(sagitta - parabola, 1.01 * next);
+  std::printf(
+      "ToothSpan round insert ri %g, fz %g: marks %.6f um (sagitta %.6f um, fz^2/(8 ri) "
+      "%.6f um), worst |kernel - arcs| %.3g mm\n",
+      ri, fz, 1e3 * (highest - lowest), 1e3 * sagitta, 1e3 * parabola, worst);
+}
+
+}  // namespace
+}  // namespace scallop
