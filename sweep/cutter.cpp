@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -167,6 +168,10 @@ Cutter Cutter::spindleEnvelope() const {
   // profile moves out by both, its corner radius unchanged.
   Cutter env = *this;
   env.radius = radius + out;
+  if (general()) {  // the same for any profile: every width grows by `out`
+    env.profile = std::make_shared<const CutterProfile>(profile->widened(out));
+    return env;
+  }
   env.type = cornerRadius > 0 ? CutterType::Bull : CutterType::Flat;
   return env;
 }

@@ -295,4 +295,23 @@ CutterProfile CutterProfile::grown(double delta) const {
   return fromChain(std::move(out));
 }
 
+CutterProfile CutterProfile::widened(double dRho) const {
+  if (dRho == 0) return *this;
+  std::vector<ProfileSegment> out;
+  const double bottom = bottomRadius_ + dRho;
+  // The flat bottom from the axis, if any is left.
+  if (bottom > 0) out.push_back({0, 0, bottom, 0});
+  for (const ProfileSegment& g : segments_) {
+    if (g.s0 == 0 && g.s1 == 0) continue;  // the old flat bottom
+    ProfileSegment o = g;
+    o.rho0 += dRho, o.rho1 += dRho;
+    if (g.arcRadius > 0) o.centreRho += dRho;
+    out.push_back(o);
+  }
+  // The bottom's end is the first piece's start, exactly.
+  if (out.size() > 1 && bottom > 0) out[1].rho0 = bottom, out[1].s0 = 0;
+  if (bottom <= 0) out.front().rho0 = 0, out.front().s0 = 0;
+  return fromChain(std::move(out));
+}
+
 }  // namespace scallop

@@ -72,6 +72,11 @@ class CutterProfile {
   // lower (that is, every point of K within delta, in the frame of a tip delta lower):
   // still a convex chain of lines and arcs (corners become arcs of radius delta).
   CutterProfile grown(double delta) const;
+  // The profile moved dRho mm away from the axis at every height: w(s) + dRho, its flat
+  // bottom's radius w(0) + dRho (a sharp tip gains a flat bottom of radius dRho). The
+  // solid a tooth's radial offset or the spindle's runout sweeps (cutter.h). Needs
+  // dRho >= -bottomRadius(); still convex (w + dRho is concave).
+  CutterProfile widened(double dRho) const;
 
  private:
   // A chain already known to be valid, with its arcs' centres: the derived values.

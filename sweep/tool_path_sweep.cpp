@@ -157,12 +157,6 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
                        "the teeth cutting model needs a feed per tooth: set "
                        "cutting.feed_per_tooth in the job (or F and S in the program)");
     const bool ccw = mv.spindle != 0 ? mv.spindle < 0 : cutting.counterClockwise;
-    if (teeth && cutters[mv.tool].general())
-      throw InputError(where, std::string("the teeth cutting model supports ball, flat and bull "
-                                          "cutters; tool ") +
-                                  std::to_string(mv.tool) + " is a " +
-                                  toString(cutters[mv.tool].type) +
-                                  " cutter (use the envelope model)");
     const Cutter& cutter = swept[mv.tool];
     PoseCurve curve = PoseCurve::ofMove(path, mv, where.c_str());
     if (teeth && !curve.linearTip() && !curve.arcTip())

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace scallop {
 
@@ -15,6 +16,10 @@ Cutter toothCutter(const Cutter& nominal, const ToothOffset& offset) {
   c.teeth = CutterTeeth{};
   if (offset.radial == 0) return c;
   c.radius = nominal.radius + offset.radial;
+  if (c.general()) {
+    c.profile = std::make_shared<const CutterProfile>(c.profile->widened(offset.radial));
+    return c;
+  }
   if (c.cornerRadius <= 0) return c;  // a flat end mill stays flat
   if (c.radius - c.cornerRadius <= 0) {
     c.radius = c.cornerRadius;

@@ -177,7 +177,9 @@ Vec3 ToothSweep::edgePoint(int k, double h, double rho, double t) const {
   Vec3 a, e1, e2;
   frame(t, a, e1, e2);
   const double phi = phaseStart_ + phaseRate_ * t;
-  if (rho < 0) {
+  if (rho < 0 && cutter_.general()) {
+    rho = cutter_.profile->width(h);  // the chain's radius at height h
+  } else if (rho < 0) {
     const double r = cutter_.cornerRadius, rb = cutter_.bottomRadius();
     rho = h >= r ? cutter_.radius : rb + std::sqrt(std::max(0.0, r * r - (r - h) * (r - h)));
   }
@@ -271,15 +273,27 @@ void ToothSweep::needSide(const Group& g, Sample& s, int side, double x, double 
 // it is a point of the cutter on the line, so the exit is no lower. In closed form:
 // with w = z - tip.z, the squared distance from the axis is A w^2 + B w + C and the
 // height along the axis c + w a_z. -inf where the line misses that solid.
+// A general cutter's flank need not be straight: its cylinder stands on the upper half
+// of the flutes, between the heights L / 2 + shrink and L - shrink, of radius
+// min(w(L / 2), w(L)) - shrink. The chain's width w is concave, so it is no less than
+// that minimum all over [L / 2, L], and every point within shrink of the cylinder lies
+// in the cutter.
 double ToothSweep::exitLowerBound(const Group& g, const Vec3& groupTip, const Vec3& a,
                                   double shrink, double x, double y) const {
   const Vec3 tip = g.drop != 0 ? groupTip - g.drop * a : groupTip;
   const double dx = x - tip.x, dy = y - tip.y;
-  const double c = dx * a.x + dy * a.y, R = g.cutter.radius - shrink;
+  const double L = g.cutter.fluteLength;
+  double R = g.cutter.radius - shrink, base = g.cutter.cornerRadius;
+  if (g.cutter.general()) {
+    const CutterProfile& p = *g.cutter.profile;
+    base = 0.5 * L;
+    R = std::min(p.width(base), p.width(L)) - shrink;
+  }
+  const double c = dx * a.x + dy * a.y;
   const double A = 1 - a.z * a.z, B = -2 * c * a.z, C = dx * dx + dy * dy - c * c - R * R;
   if (!(a.z > 1e-9) || !(R > 0)) return -HUGE_VAL;
-  const double sLo = (g.cutter.cornerRadius + shrink - c) / a.z;
-  const double sHi = (g.cutter.fluteLength - shrink - c) / a.z;
+  const double sLo = (base + shrink - c) / a.z;
+  const double sHi = (L - shrink - c) / a.z;
   double w1 = -HUGE_VAL, w2 = HUGE_VAL;
   if (A > 1e-15) {
     const double disc = B * B - 4 * A * C;

@@ -31,9 +31,71 @@ constexpr double kSlack = 1e-9;
 // Newton is tried from cells whose bound B is below this, mm.
 constexpr double kNewtonBound = 1e-2;
 
+// A general cutter's chain (cutter_profile.h) by arc length: each piece's length and,
+// for an arc, its centre found here from its ends and radius (on the solid's side, the
+// left of the chain's direction from the tip up) and its start angle about it.
+struct ChainPiece {
+  double r0, s0, r1, s1, radius, length;
+  double cr = 0, cs = 0, angle0 = 0;
+};
+
+std::vector<ChainPiece> chainPieces(const Cutter& c) {
+  std::vector<ChainPiece> out;
+  for (const ProfileSegment& g : c.profile->segments()) {
+    ChainPiece p{g.rho0, g.s0, g.rho1, g.s1, g.arcRadius, 0};
+    const double dr = g.rho1 - g.rho0, ds = g.s1 - g.s0, chord = std::hypot(dr, ds);
+    if (!(chord > 0)) continue;
+    if (g.arcRadius > 0) {
+      const double half = 0.5 * chord;
+      const double off = std::sqrt(std::max(0.0, g.arcRadius * g.arcRadius - half * half));
+      p.cr = 0.5 * (g.rho0 + g.rho1) - ds / chord * off;
+      p.cs = 0.5 * (g.s0 + g.s1) + dr / chord * off;
+      p.angle0 = std::atan2(g.s0 - p.cs, g.rho0 - p.cr);
+      double span = std::atan2(g.s1 - p.cs, g.rho1 - p.cr) - p.angle0;
+      while (span <= 0) span += 2 * kPi;  // anticlockwise about the centre
+      p.length = g.arcRadius * span;
+    } else {
+      p.length = chord;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+// The piece's point at arc length v from its start (v may run past either end: a
+// line goes straight on, an arc round its circle).
+EdgeSpot onPiece(const ChainPiece& p, double v) {
+  if (p.radius > 0) {
+    const double a = p.angle0 + v / p.radius;
+    return {p.cr + p.radius * std::cos(a), p.cs + p.radius * std::sin(a)};
+  }
+  const double f = v / p.length;
+  return {p.r0 + (p.r1 - p.r0) * f, p.s0 + (p.s1 - p.s0) * f};
+}
+
+// The tangent line of a piece at its start (v < 0) or end (v > its length), straight on.
+EdgeSpot straightOn(const ChainPiece& p, double v) {
+  const double eps = 1e-6 * std::min(1.0, p.length);
+  const bool atStart = v < 0;
+  const EdgeSpot a = onPiece(p, atStart ? 0 : p.length);
+  const EdgeSpot b = onPiece(p, atStart ? eps : p.length - eps);
+  const double d = atStart ? -v : v - p.length;
+  return {a.rho + (a.rho - b.rho) / eps * d, a.h + (a.h - b.h) / eps * d};
+}
+
+EdgeSpot chainAt(const std::vector<ChainPiece>& pieces, double u) {
+  if (u < 0) return straightOn(pieces.front(), u);
+  for (const ChainPiece& p : pieces) {
+    if (u <= p.length) return onPiece(p, u);
+    u -= p.length;
+  }
+  return straightOn(pieces.back(), pieces.back().length + u);
+}
+
 // The meridian profile by arc length, extended beyond [0, U] (straight on) so that
 // Newton's differences work at the ends; the roots kept are inside.
 EdgeSpot profileAt(const Cutter& c, double u) {
+  if (c.general()) return chainAt(chainPieces(c), u);
   const double R = c.radius, r = c.cornerRadius, rb = c.bottomRadius();
   const double cornerEnd = rb + r * kPi / 2;
   if (u <= rb && (rb > 0 || u < 0)) return {u, 0};
@@ -62,6 +124,7 @@ struct Edges {
   double drMost = 0, daMost = 0;  // their largest sizes
 
   Edges(const Cutter& cutter, const ToothMove& move) : c(cutter), m(move) {
+    if (c.general()) chain = chainPieces(c);
     a0 = normalize(m.a0);
     const Vec3 a1 = normalize(m.a1);
     const Vec3 ref = std::fabs(a0.x) > std::cos(kPi / 6) ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
@@ -106,7 +169,9 @@ struct Edges {
     return v * co + cross(w, v) * si + w * (dot(w, v) * (1 - co));
   }
 
-  EdgeSpot spot(double u) const { return profileAt(c, u); }
+  std::vector<ChainPiece> chain;  // a general cutter's
+
+  EdgeSpot spot(double u) const { return c.general() ? chainAt(chain, u) : profileAt(c, u); }
 
   Vec3 point(int k, double u, double t) const {
     const EdgeSpot s = spot(u);
@@ -120,7 +185,8 @@ struct Edges {
 
   // |dP/dt| over a cell whose top (largest u) is uTop.
   double Lt(double uTop) const {
-    const EdgeSpot s = spot(std::min(uTop, U));
+    // A general chain's distance from the tip need not grow along it: its bound, R and L.
+    const EdgeSpot s = c.general() ? EdgeSpot{c.radius, c.fluteLength} : spot(std::min(uTop, U));
     return tipSpeed + (turn + std::fabs(m.phaseRate)) *
                           (c.teeth.runout + std::hypot(s.rho + drMost, s.h + daMost));
   }
@@ -205,6 +271,11 @@ struct ByLowBound {
 }  // namespace
 
 double edgeLength(const Cutter& c) {
+  if (c.general()) {
+    double u = 0;
+    for (const ChainPiece& p : chainPieces(c)) u += p.length;
+    return u;
+  }
   return c.bottomRadius() + c.cornerRadius * kPi / 2 + (c.fluteLength - c.cornerRadius);
 }
 
@@ -251,12 +322,20 @@ ToothHit toothLowest(const Cutter& c, const ToothMove& m, double x, double y, To
       std::max(1, int(std::ceil(span * std::max({std::fabs(m.phaseRate) / (kPi / 8),
                                                  e.tipSpeed / (0.25 * c.radius), e.turn / 0.05}))));
   const double rb = c.bottomRadius(), r = c.cornerRadius;
+  // The profile's junctions by arc length: the bull's (or ball's, flat's), or a chain's.
+  std::vector<double> junctions{rb, rb + r * kPi / 2};
+  if (c.general()) {
+    junctions.clear();
+    double u = 0;
+    for (const ChainPiece& p : chainPieces(c)) junctions.push_back(u += p.length);
+  }
   for (int k = 0; k < c.teeth.flutes; ++k) {
     // The tooth's span, cut at the profile's junctions inside it.
     const double lo = e.uLo[size_t(k)], hi = e.uHi[size_t(k)];
     std::vector<double> uCuts{lo};
-    for (double j : {rb, rb + r * kPi / 2, hi})
-      if (j > uCuts.back() && j <= hi) uCuts.push_back(j);
+    for (double j : junctions)
+      if (j > uCuts.back() && j < hi) uCuts.push_back(j);
+    if (hi > uCuts.back()) uCuts.push_back(hi);
     for (size_t s = 1; s < uCuts.size(); ++s) {
       const int nu = std::max(1, int(std::ceil((uCuts[s] - uCuts[s - 1]) / (0.25 * c.radius))));
       for (int i = 0; i < nu; ++i) {

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "base/constants.h"
+#include "sweep/profile_cases.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_reference.h"
 
@@ -333,6 +334,64 @@ TEST(ToothSweep, SpindleAngleRunsAlongThePathRapidsIncluded) {
   }
   std::printf("ToothSweep path phase: %d compared, worst %.3g mm\n", compared, worst);
   EXPECT_GE(compared, 16);
+}
+
+// General cutters (profile_cases.h: tapered balls and bulls, cones, barrels, lenses,
+// ovals, free chains) with teeth against the reference walking their chain by arc
+// length: constant and turning axes (10 to 20 degrees a move), feeds and ramps, runout,
+// and on some straight moves tooth offsets (the chain moved out, the tip lowered).
+TEST(ToothSweep, ProfileCuttersAgreeWithTheReference) {
+  std::mt19937_64 rng(3301);
+  std::uniform_real_distribution<double> u(0, 1);
+  const unsigned long long unprovenBefore = ToothSweep::unprovenSearches();
+  int hits = 0, turns = 0, offsets = 0;
+  double worst = 0;
+  ref::ToothStats stats;
+  for (int n = 0; n < 18; ++n) {
+    RandomCase rc = randomCase(rng, n);  // its move and teeth; the cutter replaced
+    const test::ProfileCase shape = test::randomProfileCase(rng, n);
+    const CutterTeeth teeth = rc.cutter.teeth;
+    rc.cutter = shape.cutter();
+    rc.cutter.teeth = CutterTeeth::make(teeth.flutes, teeth.helixDeg,
+                                        std::min(teeth.runout, 0.05 * rc.cutter.radius),
+                                        teeth.runoutPhaseDeg, rc.cutter.radius);
+    if (n % 4 == 1 && !turning(n)) {
+      for (int k = 0; k < rc.cutter.teeth.flutes; ++k)
+        rc.cutter.teeth.toothOffsets.push_back(
+            {k == 0 ? 0.0 : 0.03 * rc.cutter.radius * u(rng), k == 0 ? 0.0 : 0.02 * u(rng)});
+      ++offsets;
+    }
+    const std::vector<SweptMove> moves =
+        sweepToolPath(rc.cutter, onePath(rc), teethModel(rc.fz, rc.phaseDeg));
+    ASSERT_EQ(moves.size(), 1u);
+    ASSERT_NE(moves[0].teeth(), nullptr);
+    const ref::ToothMove m = refMove(rc);
+    for (int q = 0; q < 2; ++q) {
+      double x, y;
+      if (!footprintPoint(rng, rc, moves[0], x, y, q == 0)) continue;
+      const LowestPoint got = moves[0].lowestPoint(x, y);
+      const ref::ToothHit want = ref::toothLowest(rc.cutter, m, x, y, &stats);
+      ASSERT_EQ(got.hit, want.hit)
+          << shape.name << " case " << n << " z " << got.z << " / " << want.z;
+      if (!got.hit) continue;
+      ++hits;
+      turns += turning(n);
+      const double err = std::fabs(got.z - want.z);
+      worst = std::max(worst, err);
+      EXPECT_LE(err, kHeightToleranceMm)
+          << shape.name << " case " << n << ": kernel " << got.z << ", reference " << want.z;
+      if (err > kHeightToleranceMm) printCase(rc, x, y);
+      EXPECT_GE(got.z, moves[0].envelopeLowestPoint(x, y).z - 1e-9) << "case " << n;
+    }
+  }
+  std::printf(
+      "ToothSweep profiles: %d hits (%d turning, %d cutters with offsets); worst |kernel - "
+      "reference| = %.3g mm; reference %ld cells, %ld near-crossings\n",
+      hits, turns, offsets, worst, stats.cells, stats.nearCrossings);
+  EXPECT_GE(hits, 28);
+  EXPECT_GE(turns, 8);
+  EXPECT_EQ(ToothSweep::unprovenSearches(), unprovenBefore);
+  EXPECT_EQ(stats.nearCrossings, 0);
 }
 
 }  // namespace

@@ -85,8 +85,9 @@ void parseToothGeometry(const json& tool, const std::string& f, Cutter& cutter) 
                                     arrayNumber(a[k][1], entry + "[1]", "an axial offset in mm")});
     }
   }
+  // A general cutter's flat bottom is its profile's (its cornerRadius is 0).
   checkToothGeometry(teeth.toothAnglesDeg, teeth.toothOffsets, teeth.flutes, cutter.radius,
-                     cutter.bottomRadius(), f);
+                     cutter.general() ? cutter.profile->bottomRadius() : cutter.bottomRadius(), f);
   parseEdgeSpans(tool, f, cutter);
 }
 
