@@ -11,6 +11,7 @@
 #include "analysis/feed_marks.h"
 #include "analysis/tooth_mark_envelope.h"
 #include "base/constants.h"
+#include "sweep/tooth_geometry.h"
 
 namespace scallop {
 
@@ -39,6 +40,55 @@ bool hasToothErrors(const CutterTeeth& teeth) {
   for (const ToothOffset& o : teeth.toothOffsets)
     if (o.radial != 0 || o.axial != 0) return true;
   return false;
+}
+
+// Edge spans: which teeth leave their arc at the contact. Each arc's part in the marks
+// lies within half a revolution's feed P / 2 of its bottom along the feed, plus the
+// farthest any tooth's errors move a bottom (|sigma_k|): on the profile, the arc lengths
+// u_c -+ rho_f asin(that / rho_f) around the contact's u_c. A tooth whose span covers
+// that stretch leaves its whole arc; one whose span misses it leaves none there (the
+// rest of its edge lies on the convex profile above, and the teeth that cut repeat
+// within P / 2 of every point, lower); a span that ends inside it leaves a piece of an
+// arc, which the envelope of whole arcs does not describe.
+struct SpanCheck {
+  std::vector<int> teeth;  // the teeth whose arc is whole at the contact
+  std::string reason;      // set when a span ends within the marks
+};
+SpanCheck teethAtContact(const Cutter& cutter, const ContactArc& arc, double lambda,
+                         const std::vector<ToothMark>& marks, double period) {
+  const CutterTeeth& teeth = cutter.teeth;
+  SpanCheck check;
+  double shift = 0;
+  for (int k = 0; k < teeth.flutes; ++k)
+    shift = std::max(
+        shift, std::fabs(marks[size_t(k)].positionMm - period * teeth.toothAngle(k) / (2 * kPi)));
+  const double rho = arc.radius;
+  const double halfArc = rho * std::asin(std::min(1.0, (0.5 * period + shift) / rho));
+  const double contactRho = arc.centreRho + rho * std::sin(lambda);
+  const double contactHeight = arc.centreS - rho * std::cos(lambda);
+  const double uc =
+      teeth.edgeSpans.empty()
+          ? 0
+          : profileArcLength(cutter.bottomRadius(), cutter.cornerRadius, contactHeight, contactRho);
+  for (int k = 0; k < teeth.flutes; ++k) {
+    if (teeth.edgeSpans.empty()) {
+      check.teeth.push_back(k);
+      continue;
+    }
+    const EdgeSpan& span = teeth.edgeSpans[size_t(k)];
+    if (span.from <= uc - halfArc && uc + halfArc <= span.to) {
+      check.teeth.push_back(k);
+    } else if (span.to > uc - halfArc && span.from < uc + halfArc) {
+      std::ostringstream msg;
+      msg << "tooth " << k + 1 << "'s edge span [" << span.from << ", " << span.to
+          << "] mm ends within its marks (the contact at " << uc << " mm -+ " << halfArc
+          << " mm of the profile)";
+      check.reason = msg.str();
+      return check;
+    }
+  }
+  if (check.teeth.empty()) check.reason = "no tooth's edge span covers the contact";
+  return check;
 }
 
 }  // namespace
@@ -82,8 +132,13 @@ FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double
   const CutterTeeth& teeth = cutter.teeth;
   const double period = teeth.flutes * fz;
   const double contactHeight = arc.centreS - rho * std::cos(lambda);
-  const MarkEnvelope envelope =
-      markEnvelope(toothMarks(teeth, cutter.radius, contactHeight, lambda, fz), period, rho);
+  const std::vector<ToothMark> marks = toothMarks(teeth, cutter.radius, contactHeight, lambda, fz);
+  const SpanCheck spans = teethAtContact(cutter, arc, lambda, marks, period);
+  if (!spans.reason.empty()) return notCovered(spans.reason);
+  std::vector<ToothMark> leaving;
+  for (int k : spans.teeth) leaving.push_back(marks[size_t(k)]);
+  MarkEnvelope envelope = markEnvelope(leaving, period, rho);
+  for (int& k : envelope.cuttingTeeth) k = spans.teeth[size_t(k)];
   if (!envelope.valid)
     return notCovered("two teeth's marks lie 2 rho_f or more apart: they are not arcs of rho_f");
   FeedMarkPrediction p;
@@ -100,7 +155,8 @@ FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double
       [&](double depth) { return depth >= kFeedMarkHysteresis * envelope.peakToValleyMm; });
   p.spacingMm = period / double(std::max<std::ptrdiff_t>(valleys, 1));
   const int cutting = int(envelope.cuttingTeeth.size());
-  if (!hasToothErrors(teeth))
+  const bool spansLeaveTeethOut = int(spans.teeth.size()) < teeth.flutes;
+  if (!hasToothErrors(teeth) && !spansLeaveTeethOut)
     p.regime = "no runout";
   else if (cutting == 1)
     p.regime = "one tooth cuts";

@@ -68,7 +68,9 @@ struct FeedMarkPrediction {
                        // "one tooth cuts", "N of M teeth cut"
 };
 
-// The feed marks `cutter` (its teeth: flutes, helix, runout, pitch, offsets) leaves along the
+// The feed marks `cutter` (its teeth: flutes, helix, runout, pitch, offsets, edge spans:
+// a tooth whose span misses the contact leaves no mark; one whose span ends within the
+// marks gives a reason instead) leaves along the
 // centre line of a pass at `leadDeg`, `tiltDeg` with fz = `feedPerToothMm` (> 0).
 FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double tiltDeg,
                                     double feedPerToothMm);

@@ -192,6 +192,41 @@ TEST_F(FeedMarksReport, AnOffsetToothsMarkMovesAlongTheFeed) {
   EXPECT_EQ(pass["predicted"]["regime"], "both teeth cut");
 }
 
+// Edge spans decide which teeth leave marks: at lead 15 deg the contact lies 3 pi / 12 =
+// 0.785 mm along the ball's profile from the tip, its marks within 0.1 mm of it. Tooth 2's
+// span [2, 13] mm starts 0.24 mm higher on the profile, so tooth 1 alone finishes: marks
+// 2 fz apart, as deep as one tooth's arc over that chord, against the exact heights. A
+// span that ends within the marks has no closed form, and the pass says so.
+TEST_F(FeedMarksReport, AToothWhoseSpanMissesTheContactLeavesNoMark) {
+  const std::string job = R"({"tool": {"type": "ball", "radius": 3, "flutes": 2,
+        "tooth_edge_spans": [[0, 13], [SPAN, 13]]},
+      "cutting": {"model": "teeth"}, "machine": {"kinematics": "xyzbc-trt"},
+      "stock": {"min": [0, -0.004, -2], "max": [0.8, 0.004, 0]}, "grid": {"spacing": 0.002},
+      "path": {"file": "p.nc"}})";
+  write("p.nc", "G43.4\nS6000 M3\nG0 X-4 Y0 Z1 B-15 C0\nG1 Z-0.1 F1200\nX5\n");
+  std::string missing = job;
+  missing.replace(missing.find("SPAN"), 4, "2");
+  const json pass = simulate(missing).at("feed_marks").at("passes").at(0);
+  ASSERT_TRUE(pass.contains("predicted")) << pass;
+  const double fz = 0.1, h = circularMarkHeight(3, 2 * fz);
+  EXPECT_NEAR(pass["predicted"]["peak_to_valley_um"].get<double>() * 1e-3, h, 1e-12) << pass;
+  EXPECT_EQ(pass["predicted"]["cutting_teeth"], json({0})) << pass;
+  EXPECT_EQ(pass["predicted"]["regime"], "one tooth cuts") << pass;
+  EXPECT_NEAR(pass.at("mean_spacing_mm").get<double>(), 2 * fz, 1e-6) << pass;
+  const double pv = pass.at("peak_to_valley_um").get<double>() * 1e-3;
+  const double slope = fz / std::sqrt(9 - fz * fz);
+  EXPECT_LE(pv, h + 2e-9) << pass;
+  EXPECT_GE(pv, h - slope * 0.001 - 2e-9) << pass;
+
+  std::string ending = job;
+  ending.replace(ending.find("SPAN"), 4, "0.8");
+  const json cut = simulate(ending).at("feed_marks").at("passes").at(0);
+  EXPECT_FALSE(cut.contains("predicted")) << cut;
+  EXPECT_NE(cut.at("predicted_reason").get<std::string>().find("tooth 2's edge span"),
+            std::string::npos)
+      << cut;
+}
+
 // Where the closed form does not apply to a pass, the pass says why and is measured.
 TEST_F(FeedMarksReport, APassWithoutAClosedFormSaysWhy) {
   const std::string job = R"({"tool": {"type": "ball", "radius": 3},
