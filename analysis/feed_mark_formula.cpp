@@ -11,7 +11,6 @@
 #include "analysis/feed_marks.h"
 #include "analysis/tooth_mark_envelope.h"
 #include "base/constants.h"
-#include "sweep/tooth_geometry.h"
 
 namespace scallop {
 
@@ -66,10 +65,7 @@ SpanCheck teethAtContact(const Cutter& cutter, const ContactArc& arc, double lam
   const double halfArc = rho * std::asin(std::min(1.0, (0.5 * period + shift) / rho));
   const double contactRho = arc.centreRho + rho * std::sin(lambda);
   const double contactHeight = arc.centreS - rho * std::cos(lambda);
-  const double uc =
-      teeth.edgeSpans.empty()
-          ? 0
-          : profileArcLength(cutter.bottomRadius(), cutter.cornerRadius, contactHeight, contactRho);
+  const double uc = cutter.edgeArcLength(contactHeight, contactRho);
   for (int k = 0; k < teeth.flutes; ++k) {
     if (teeth.edgeSpans.empty()) {
       check.teeth.push_back(k);

@@ -151,13 +151,19 @@ double CutterTeeth::axialReach() const {
 
 double Cutter::edgeLength() const {
   if (!general()) return bottomRadius() + cornerRadius * kPi / 2 + (fluteLength - cornerRadius);
-  double sum = 0;
-  for (const ProfileSegment& g : profile->segments()) {
-    const double chord = std::hypot(g.rho1 - g.rho0, g.s1 - g.s0);
-    sum += g.arcRadius > 0 ? 2 * g.arcRadius * std::asin(std::min(1.0, chord / (2 * g.arcRadius)))
-                           : chord;
-  }
-  return sum;
+  return profile->arcLength();
+}
+
+double Cutter::edgeArcLength(double h, double rho) const {
+  if (!general()) return profileArcLength(bottomRadius(), cornerRadius, h, rho);
+  return profile->arcLengthAt(rho, h);
+}
+
+void Cutter::edgeSpanRadii(const EdgeSpan& span, double* lo, double* hi) const {
+  if (general()) return profile->radiusRange(span.from, span.to, lo, hi);
+  // The radius is non-decreasing along a ball, flat or bull profile.
+  *lo = profileRadiusAt(bottomRadius(), cornerRadius, span.from);
+  *hi = profileRadiusAt(bottomRadius(), cornerRadius, span.to);
 }
 
 Cutter Cutter::spindleEnvelope() const {

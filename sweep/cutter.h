@@ -92,6 +92,11 @@ struct Cutter {
   // The profile's arc length from the axis at the tip to the flute top, mm: the length
   // of a whole edge (EdgeSpan's parameter).
   double edgeLength() const;
+  // The arc length from the axis at the tip to the profile's point at height h above
+  // the tip and radius rho from the axis (EdgeSpan's parameter), mm; and the smallest
+  // and largest radius of the profile's points on `span`, mm.
+  double edgeArcLength(double h, double rho) const;
+  void edgeSpanRadii(const EdgeSpan& span, double* lo, double* hi) const;
 
   CutterTeeth teeth;  // read by the "teeth" cutting model only
 

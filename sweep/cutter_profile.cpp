@@ -314,4 +314,106 @@ CutterProfile CutterProfile::widened(double dRho) const {
   return fromChain(std::move(out));
 }
 
+// --- Arc length along the chain (edge spans) ---------------------------------------
+// A segment is a line or an arc of at most a half turn; on an arc, angles are taken
+// about its centre from +rho towards +s, and `sweep` is the signed turn from start to end.
+
+namespace {
+
+struct ArcAngles {
+  double start, sweep;
+};
+ArcAngles arcAngles(const ProfileSegment& g) {
+  const double a0 = std::atan2(g.s0 - g.centreS, g.rho0 - g.centreRho);
+  const double a1 = std::atan2(g.s1 - g.centreS, g.rho1 - g.centreRho);
+  return {a0, std::remainder(a1 - a0, 2 * kPi)};
+}
+
+double segmentLength(const ProfileSegment& g) {
+  const double chord = std::hypot(g.rho1 - g.rho0, g.s1 - g.s0);
+  if (!(g.arcRadius > 0)) return chord;
+  return 2 * g.arcRadius * std::asin(std::min(1.0, chord / (2 * g.arcRadius)));
+}
+
+// The point at arc length l (0 <= l <= its length) along segment g.
+ProfilePoint segmentPoint(const ProfileSegment& g, double l) {
+  if (!(g.arcRadius > 0)) {
+    const double len = segmentLength(g), t = len > 0 ? l / len : 0;
+    return {g.rho0 + t * (g.rho1 - g.rho0), g.s0 + t * (g.s1 - g.s0)};
+  }
+  const ArcAngles a = arcAngles(g);
+  const double angle = a.start + std::copysign(l / g.arcRadius, a.sweep);
+  return {g.centreRho + g.arcRadius * std::cos(angle), g.centreS + g.arcRadius * std::sin(angle)};
+}
+
+// The arc length along g to its point nearest (rho, s), and that point's distance.
+void nearestOnSegment(const ProfileSegment& g, double rho, double s, double* along,
+                      double* distance) {
+  const double len = segmentLength(g);
+  if (!(g.arcRadius > 0)) {
+    const double dr = g.rho1 - g.rho0, ds = g.s1 - g.s0;
+    const double t =
+        len > 0 ? std::clamp(((rho - g.rho0) * dr + (s - g.s0) * ds) / (len * len), 0.0, 1.0) : 0;
+    *along = t * len;
+    *distance = std::hypot(rho - g.rho0 - t * dr, s - g.s0 - t * ds);
+    return;
+  }
+  const ArcAngles a = arcAngles(g);
+  const double turn =
+      std::remainder(std::atan2(s - g.centreS, rho - g.centreRho) - a.start, 2 * kPi);
+  if (turn * a.sweep >= 0 && std::fabs(turn) <= std::fabs(a.sweep)) {
+    *along = std::fabs(turn) * g.arcRadius;
+    *distance = std::fabs(std::hypot(rho - g.centreRho, s - g.centreS) - g.arcRadius);
+    return;
+  }
+  const double d0 = std::hypot(rho - g.rho0, s - g.s0), d1 = std::hypot(rho - g.rho1, s - g.s1);
+  *along = d0 <= d1 ? 0 : len;
+  *distance = std::min(d0, d1);
+}
+
+}  // namespace
+
+double CutterProfile::arcLength() const {
+  double sum = 0;
+  for (const ProfileSegment& g : segments_) sum += segmentLength(g);
+  return sum;
+}
+
+double CutterProfile::arcLengthAt(double rho, double s) const {
+  double before = 0, best = HUGE_VAL, at = 0;
+  for (const ProfileSegment& g : segments_) {
+    double along, distance;
+    nearestOnSegment(g, rho, s, &along, &distance);
+    if (distance < best) best = distance, at = before + along;
+    before += segmentLength(g);
+  }
+  return at;
+}
+
+void CutterProfile::radiusRange(double from, double to, double* lo, double* hi) const {
+  *lo = HUGE_VAL, *hi = -HUGE_VAL;
+  double before = 0;
+  for (const ProfileSegment& g : segments_) {
+    const double len = segmentLength(g);
+    const double l0 = std::max(from - before, 0.0), l1 = std::min(to - before, len);
+    before += len;
+    if (l0 > l1) continue;
+    for (double l : {l0, l1}) {
+      const double r = segmentPoint(g, l).rho;
+      *lo = std::min(*lo, r), *hi = std::max(*hi, r);
+    }
+    if (!(g.arcRadius > 0)) continue;
+    // An arc's farthest and nearest points from the axis, where its sub-arc holds them.
+    const ArcAngles a = arcAngles(g);
+    for (double extreme : {0.0, kPi}) {
+      const double turn = std::remainder(extreme - a.start, 2 * kPi);
+      const double l = std::fabs(turn) * g.arcRadius;
+      if (turn * a.sweep >= 0 && std::fabs(turn) <= std::fabs(a.sweep) && l >= l0 && l <= l1) {
+        const double r = g.centreRho + g.arcRadius * std::cos(extreme);
+        *lo = std::min(*lo, r), *hi = std::max(*hi, r);
+      }
+    }
+  }
+}
+
 }  // namespace scallop

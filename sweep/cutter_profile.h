@@ -78,6 +78,15 @@ class CutterProfile {
   // dRho >= -bottomRadius(); still convex (w + dRho is concave).
   CutterProfile widened(double dRho) const;
 
+  // Arc length along the chain from the axis at the tip (edge spans' parameter, mm): the
+  // whole chain's, and that of the chain point nearest (rho, s) (a point of the chain
+  // gives its own; one on the cap, the chain's end).
+  double arcLength() const;
+  double arcLengthAt(double rho, double s) const;
+  // The smallest and largest distance from the axis of the chain's points whose arc
+  // length lies in [from, to], mm (a barrel's chain need not widen all the way up).
+  void radiusRange(double from, double to, double* lo, double* hi) const;
+
  private:
   // A chain already known to be valid, with its arcs' centres: the derived values.
   static CutterProfile fromChain(std::vector<ProfileSegment> chain);

@@ -61,9 +61,9 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
       g.spanned = spanned;
       g.span = span;
       if (spanned) {
-        const double rb = cutter.bottomRadius(), r = cutter.cornerRadius;
-        g.spanRadiusMin = profileRadiusAt(rb, r, span.from) + o.radial;
-        g.spanRadiusMax = profileRadiusAt(rb, r, span.to) + o.radial;
+        cutter.edgeSpanRadii(span, &g.spanRadiusMin, &g.spanRadiusMax);
+        g.spanRadiusMin += o.radial;
+        g.spanRadiusMax += o.radial;
       }
       groups.push_back(g);
       it = groups.end() - 1;
@@ -107,11 +107,12 @@ bool ToothGroup::hasRootIn(double lo, double hi) const {
   return false;
 }
 
-// The solid's profile is the nominal one moved out by the radial offset, so its arc
-// length runs `radial` ahead of the nominal edge's.
+// The solid's profile is the nominal one moved out by the radial offset (a general
+// chain gains a flat bottom that much wider: CutterProfile::widened), so its arc length
+// runs `radial` ahead of the nominal edge's.
 bool ToothGroup::onSpan(double h, double rho) const {
   if (!spanned) return true;
-  const double u = profileArcLength(cutter.bottomRadius(), cutter.cornerRadius, h, rho) - radial;
+  const double u = cutter.edgeArcLength(h, rho) - radial;
   return u >= span.from && u <= span.to;
 }
 

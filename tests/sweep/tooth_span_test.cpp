@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/constants.h"
+#include "sweep/profile_cases.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_reference.h"
 #include "sweep/tooth_sweep.h"
@@ -172,6 +173,100 @@ TEST(ToothSpan, SpansAgreeWithTheReference) {
               misses, worst);
   EXPECT_GE(hits, 60);
   EXPECT_GE(misses, 3);
+  EXPECT_EQ(ToothSweep::unprovenSearches(), unprovenBefore);
+}
+
+// A general cutter's chain (tapered balls and bulls, cones, barrels, lenses, ovals, free
+// chains): the kernel's arc length of a chain point is the reference's parameter, and
+// the radii of a span are those of the chain's points on it (dense sampling).
+TEST(ToothSpan, ArcLengthAlongAGeneralChainIsTheReferences) {
+  std::mt19937_64 rng(3502);
+  for (int n = 0; n < 14; ++n) {
+    const Cutter c = test::randomProfileCase(rng, n).cutter();
+    const double U = ref::edgeLength(c);
+    EXPECT_NEAR(c.edgeLength(), U, 1e-12) << n;
+    for (int i = 0; i <= 400; ++i) {
+      const double u = U * i / 400;
+      const ref::EdgeSpot p = ref::edgeSpot(c, u);
+      EXPECT_NEAR(c.edgeArcLength(p.h, p.rho), u, 1e-9) << n << " " << u;
+    }
+    const EdgeSpan span{0.2 * U, 0.9 * U};
+    double lo, hi, sampledLo = HUGE_VAL, sampledHi = -HUGE_VAL;
+    c.edgeSpanRadii(span, &lo, &hi);
+    for (int i = 0; i <= 4000; ++i) {
+      const double rho = ref::edgeSpot(c, span.from + (span.to - span.from) * i / 4000).rho;
+      sampledLo = std::min(sampledLo, rho), sampledHi = std::max(sampledHi, rho);
+    }
+    EXPECT_LE(lo, sampledLo + 1e-12) << n;
+    EXPECT_GE(hi, sampledHi - 1e-12) << n;
+    EXPECT_NEAR(lo, sampledLo, 1e-5) << n;
+    EXPECT_NEAR(hi, sampledHi, 1e-5) << n;
+  }
+}
+
+// Spans on general cutters against the reference: random chains whose teeth cover a
+// random piece or start at the axis, with helix, runout, outward radial and axial
+// offsets, unequal pitch and either spindle direction, on constant and turning axes.
+TEST(ToothSpan, GeneralCuttersSpansAgreeWithTheReference) {
+  std::mt19937_64 rng(3503);
+  std::uniform_real_distribution<double> u(0, 1);
+  const unsigned long long unprovenBefore = ToothSweep::unprovenSearches();
+  int hits = 0, misses = 0;
+  double worst = 0;
+  for (int n = 0; n < 14; ++n) {
+    Cutter c = test::randomProfileCase(rng, n).cutter();
+    const double R = c.radius, U = c.edgeLength();
+    const int flutes = 1 + n % 3;
+    c.teeth = CutterTeeth::make(flutes, n % 4 == 2 ? 30 * u(rng) : 0, n % 5 == 1 ? 0.02 * R : 0,
+                                360 * u(rng), R);
+    const bool turns = n % 6 == 5;
+    for (int k = 0; k < flutes; ++k) {
+      EdgeSpan s;
+      if ((n + k) % 2) {
+        s.from = U * 0.5 * u(rng);
+        s.to = s.from + (U - s.from) * (0.1 + 0.9 * u(rng));
+      } else {
+        s = {0, U * (0.1 + 0.4 * u(rng))};
+      }
+      c.teeth.edgeSpans.push_back(s);
+    }
+    if (n % 2 && !turns)
+      for (int k = 0; k < flutes; ++k)
+        c.teeth.toothOffsets.push_back({0.01 * R * u(rng), 0.01 * (u(rng) - 0.5)});
+    if (n % 4 == 3 && flutes > 1)
+      for (int k = 0; k < flutes; ++k)
+        c.teeth.toothAnglesDeg.push_back(k == 0 ? 0 : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
+    checkEdgeSpans(c.teeth.edgeSpans, flutes, U, "tool.tooth_edge_spans", true);
+    const double tilt = n % 5 == 0 ? 0 : 0.4 * u(rng), az = 2 * kPi * u(rng);
+    const Vec3 a0{std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt)};
+    const Vec3 a1 = turns ? normalize(a0 + Vec3{0.15, -0.1, 0}) : a0;
+    const Vec3 p0{0, 0, 0},
+        p1{0.8 * std::cos(az + 1), 0.8 * std::sin(az + 1), 0.1 * (u(rng) - 0.5)};
+    const double fz = 0.05 + 0.1 * u(rng), phaseDeg = 360 * u(rng);
+    const bool counter = n % 3 == 2;
+    const SweptMove move = sweepOne(c, p0, p1, a0, a1, teethModel(fz, phaseDeg, counter));
+    const ref::ToothMove m{
+        p0, p1, a0, a1, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (flutes * fz), counter};
+    for (int q = 0; q < 4; ++q) {
+      const double t = u(rng), ang = 2 * kPi * u(rng), rho = 1.05 * R * std::sqrt(u(rng));
+      const Vec3 at = p0 + (p1 - p0) * t;
+      const double x = at.x + rho * std::cos(ang), y = at.y + rho * std::sin(ang);
+      const LowestPoint got = move.lowestPoint(x, y);
+      const ref::ToothHit want = ref::toothLowest(c, m, x, y);
+      ASSERT_EQ(got.hit, want.hit) << n << " " << q << " " << got.z << " " << want.z;
+      if (!got.hit) {
+        ++misses;
+        continue;
+      }
+      ++hits;
+      worst = std::max(worst, std::fabs(got.z - want.z));
+      EXPECT_NEAR(got.z, want.z, kHeightToleranceMm) << n << " " << q;
+      EXPECT_GE(got.z, move.envelopeLowestPoint(x, y).z - 1e-9) << n;
+    }
+  }
+  std::printf("ToothSpan general: %d hits, %d misses, worst |kernel - reference| %.3g mm\n", hits,
+              misses, worst);
+  EXPECT_GE(hits, 25);
   EXPECT_EQ(ToothSweep::unprovenSearches(), unprovenBefore);
 }
 
