@@ -43,8 +43,15 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
   const int n = teeth.flutes;
   for (int k = 0; k < n; ++k) {
     const ToothOffset o = teeth.toothOffset(k);
-    const bool spanned = !teeth.edgeSpans.empty();
-    const EdgeSpan span = spanned ? teeth.edgeSpans[size_t(k)] : EdgeSpan{};
+    // A tooth moved out (dr > 0) has its edge's inner end dr from the axis: the group's
+    // solid (the profile widened by dr) has a flat disc of radius dr inside it that no edge
+    // crosses, so its edge is the span [0, U] of the nominal edge (a plunge leaves a
+    // pillar of radius dr there). Moved in (dr < 0), the edge ends at the axis (the
+    // narrowed solid's flat bottom reaches it; nothing passes to the other side).
+    const bool spanned = !teeth.edgeSpans.empty() || o.radial > 0;
+    const EdgeSpan span = !teeth.edgeSpans.empty() ? teeth.edgeSpans[size_t(k)]
+                          : spanned                ? EdgeSpan{0, cutter.edgeLength()}
+                                                   : EdgeSpan{};
     auto same = [&](const ToothGroup& g) {
       return g.radial == o.radial && g.drop == o.axial && g.span == span;
     };

@@ -15,6 +15,7 @@
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "sweep/profile_cases.h"
 #include "sweep/tool_path_sweep.h"
 #include "sweep/tooth_reference.h"
 #include "sweep/tooth_sweep.h"
@@ -269,6 +270,53 @@ TEST(ToothGeometry, ToothReachingBelowTheTipNeedsAConstantAxis) {
   c.teeth.toothOffsets = {{0, -0.001}, {0.002, 0}};  // raised, or out: any move
   EXPECT_EQ(sweepOne(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, normalize(Vec3{0.2, 0, 1}), model).size(),
             1u);
+}
+
+// A tooth moved out by dr > 0 starts dr from the axis: on a plunge (every tooth moved out)
+// the lines within dr of the axis meet no edge, a pillar of radius dr stands (before, the
+// group's solid, whose widened flat bottom reaches the axis, cut it). Moved in (dr < 0),
+// the edge ends at the axis. Flat, bull, ball and a tapered ball (a general chain) on a
+// plunge and a steep tilted ramp, against the reference.
+TEST(ToothGeometry, AnEdgeMovedOutStartsThatFarFromTheAxis) {
+  std::mt19937_64 rng(45);
+  std::uniform_real_distribution<double> u(0, 1);
+  const Cutter shapes[] = {
+      Cutter::make(CutterType::Flat, 1, 0, 3), Cutter::make(CutterType::Bull, 1, 0.3, 3),
+      Cutter::make(CutterType::Ball, 1, 1, 3), test::randomProfileCase(rng, 0).cutter()};
+  int pillar = 0, hits = 0;
+  for (int n = 0; n < 12; ++n) {
+    Cutter c = shapes[n % 4];
+    // Moved in only where a flat bottom leaves room (the job's rule, tooth_geometry.h).
+    const double rb = c.general() ? c.profile->bottomRadius() : c.bottomRadius();
+    const double R = c.radius, dr = (n / 4 == 1 && rb > 0 ? -0.04 : 0.04) * R;
+    // Three teeth: an edge passing the axis would lie between two others (with two it
+    // would lie on the other's place and change nothing).
+    c.teeth = CutterTeeth::make(3, 0, 0, 0, R);
+    c.teeth.toothOffsets.assign(3, ToothOffset{dr, 0});
+    const bool ramp = n / 4 == 2;
+    const Vec3 a = ramp ? normalize(Vec3{0.1, 0.05, 1}) : Vec3{0, 0, 1};
+    const Vec3 p0{0, 0, 0.4}, p1{ramp ? 0.05 : 0.0, 0, -0.3};
+    const double fz = 0.05, phaseDeg = 30;
+    const auto moves = sweepOne(c, p0, p1, a, a, teethModel(fz, phaseDeg));
+    const ref::ToothMove m{
+        p0, p1, a, a, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (3 * fz)};
+    for (double d : {0.2, 0.6, 0.9, 1.2, 3.0, 8.0}) {
+      const double ang = 2 * kPi * u(rng), dist = d * std::abs(dr);
+      const double x = p1.x + dist * std::cos(ang), y = p1.y + dist * std::sin(ang);
+      const LowestPoint got = moves[0].lowestPoint(x, y);
+      const ref::ToothHit want = ref::toothLowest(c, m, x, y);
+      ASSERT_EQ(got.hit, want.hit) << n << " d " << d << " z " << got.z << " / " << want.z;
+      if (!ramp && dr > 0 && d < 1) {
+        EXPECT_FALSE(got.hit) << n << " d " << d;
+        ++pillar;
+      }
+      if (!got.hit) continue;
+      ++hits;
+      EXPECT_NEAR(got.z, want.z, kHeightToleranceMm) << n << " d " << d;
+    }
+  }
+  EXPECT_EQ(pillar, 18);
+  EXPECT_GE(hits, 30);
 }
 
 // The envelope model ignores the teeth keys, tooth_offsets included (docs/teeth.md).

@@ -155,6 +155,10 @@ struct Edges {
       const bool spans = !c.teeth.edgeSpans.empty();
       uLo.push_back(spans ? c.teeth.edgeSpans[size_t(k)].from : 0);
       uHi.push_back(spans ? c.teeth.edgeSpans[size_t(k)].to : U);
+      // Moved in (dr < 0), the edge ends at the axis: its flat bottom's points u < -dr
+      // (radius u + dr < 0) would pass to the other side and are not edge (moved out, it
+      // starts at radius dr: point() needs nothing more).
+      uLo.back() = std::max(uLo.back(), -dr[size_t(k)]);
     }
     // |dP/du|: the meridian by arc length, and the helix's turn of a point at radius
     // at most R + |dr|max.
