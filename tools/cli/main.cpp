@@ -23,11 +23,13 @@ namespace {
 
 constexpr const char* kDescription =
     "scallop: exact machined-surface topography of milling tool paths.\n"
-    "Sweeps ball, flat and bull (torus) cutters along linear moves, with any tool axis,\n"
-    "and computes on a z-map grid the exact lowest point of the swept solids (double\n"
-    "precision, 1e-6 mm). Lengths in mm, angles in degrees. Exit status: 0 success,\n"
-    "1 bad input, 2 usage error, 3 internal error, 130 interrupted (Ctrl-C; no partial\n"
-    "outputs are left). `scallop COMMAND --help` for more.";
+    "Sweeps milling cutters of any convex profile (ball, flat, bull, tapered, cone, barrel,\n"
+    "APT CUTTER) along straight moves and arcs, with any tool axis (5-axis, machines), as\n"
+    "whole solids or as teeth, and computes on a z-map grid (or a frame's) the exact lowest\n"
+    "point of the swept solids (double precision, 1e-6 mm). Lengths in mm, angles in\n"
+    "degrees. Exit status: 0 success, 1 bad input, 2 usage error, 3 internal error,\n"
+    "130 interrupted (Ctrl-C; no partial outputs are left). `scallop COMMAND --help` for\n"
+    "more; start with `scallop simulate` (a built-in job) and docs/CONVENTIONS.md.";
 
 }  // namespace
 

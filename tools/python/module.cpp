@@ -19,7 +19,8 @@ namespace py = pybind11;
 PYBIND11_MODULE(scallop, m) {
   m.doc() =
       "scallop: exact machined-surface topography of milling tool paths.\n\n"
-      "Sweeps ball, flat and bull (torus) cutters along tool paths and computes on a\n"
+      "Sweeps milling cutters of any convex profile (ball, flat, bull, tapered, cone,\n"
+      "barrel, APT CUTTER) along tool paths and computes on a\n"
       "z-map grid the exact lowest point of the swept solids, in double precision.\n"
       "Lengths in mm, angles in degrees (docs/CONVENTIONS.md).\n\n"
       "  simulate(job) -> Result      heights (NumPy view, row 0 = largest y), grid, report\n"
