@@ -9,6 +9,7 @@
 
 #include "analysis/feed_mark_formula.h"
 #include "analysis/feed_marks.h"
+#include "analysis/pass_section.h"
 #include "analysis/profile_metrology.h"
 #include "base/constants.h"
 #include "tools/io/job.h"
@@ -170,6 +171,35 @@ void addPrediction(const FeedMarkPrediction& p, json& plan) {
   plan["predicted"] = j;
 }
 
+// Whether the raster's neighbouring passes, a step-over w to each side, may cut into
+// the centre line's marks: the closed form is one pass's, and a neighbour's envelope on
+// this line is F(w) above the floor (analysis/pass_section.h). Where F(w) is at least the
+// marks' height h (the pass section's reach at h is less than w on both sides, zigzag's
+// mirrored passes included), no neighbour reaches the marks' peaks and the closed form
+// holds (the closed form is for lead alone, so the line, under the tip, runs along the
+// floor). Otherwise the neighbours cut the
+// line with their own marks, whose spindle phase depends on the path before them (pass lengths,
+// rapids): in phase with this pass's they leave its marks as predicted, out of phase they lower the
+// peaks.
+void addNeighbours(const Job& job, const FeedMarkPrediction& p, json& plan) {
+  const PassSection section = PassSection::of(job.cutter, job.raster.leadDeg, job.raster.tiltDeg);
+  const double w = job.raster.stepOver;
+  bool reach = false;
+  for (const int sign : {1, -1}) {
+    const SectionSide side = section.side(p.heightMm, sign);
+    reach = reach || !side.reachable || side.offset.high >= w;
+  }
+  plan["predicted"]["neighbouring_passes"] = {
+      {"step_over_mm", w},
+      {"may_cut_the_marks", reach},
+      {"note", reach ? "the passes beside this one reach this line less than the marks' height "
+                       "above its floor: where their marks are out of phase with this pass's "
+                       "they lower its peaks, and the measured peak-to-valley is smaller than "
+                       "the closed form's"
+                     : "the passes beside this one stay above the marks' peaks on this line: "
+                       "the closed form is the whole story"}};
+}
+
 // The closed form for a raster (analysis/feed_mark_formula.h).
 void addRasterPrediction(const Job& job, json& plan) {
   if (!job.isRaster) {
@@ -177,9 +207,10 @@ void addRasterPrediction(const Job& job, json& plan) {
         "the closed form of the centre line is recorded for raster jobs; see each pass's";
     return;
   }
-  addPrediction(predictFeedMarks(job.cutter, job.raster.leadDeg, job.raster.tiltDeg,
-                                 job.cutting.feedPerTooth),
-                plan);
+  const FeedMarkPrediction p = predictFeedMarks(job.cutter, job.raster.leadDeg, job.raster.tiltDeg,
+                                                job.cutting.feedPerTooth);
+  addPrediction(p, plan);
+  if (p.applicable && plan.value("pass_count", 0) > 1) addNeighbours(job, p, plan);
 }
 
 // The closed form for the pass of moves first..last: a level straight run with one

@@ -2,6 +2,7 @@
 // writes it: the closed form of the feed marks met on the pass centre line, the same
 // section from bands as from the whole map, the line sampled as `export --profile`
 // samples it, and the teeth model's refusals and warnings around the run.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -277,6 +278,34 @@ TEST(FeedMarkSampler, SamplesAsExtractProfileDoesFromAnyBands) {
     rows.add(band);
   }
   EXPECT_EQ(rows.report(), r);
+}
+
+// Whether the raster's neighbours may cut the centre line's marks, against the ball's
+// closed form: a ball's section is its circle whatever the lead, so the neighbours (tip
+// lines w away) reach the centre line R - sqrt(R^2 - w^2) above its floor, and they may
+// cut the marks iff that is below the marks' height. (At w = fz / 2 the two are equal:
+// the same circle; the step-overs stay clear of it.)
+TEST(FeedMarkPlan, NeighbouringPassesMayCutTheMarksIffTheyReachBelowThePeaks) {
+  const double R = 3, fz = 0.1;
+  const FeedMarkPrediction p = predictFeedMarks(Cutter::make(CutterType::Ball, R), 15, 0, fz);
+  ASSERT_TRUE(p.applicable) << p.reason;
+  int reach = 0, clear = 0;
+  for (const double w : {0.02, 0.04, 0.07, 0.2, 0.5}) {
+    std::string text = kJob;
+    text.replace(text.find("0.02, \"depth\""), 4, fmt::format("{}", w));
+    text.replace(text.find("-0.02, -2"), 5, "-0.6");  // room for passes at every w
+    text.replace(text.find("0.02, 0]"), 4, "0.6");
+    const Job job = loadJob(text, "job.json");
+    ASSERT_EQ(job.raster.stepOver, w);
+    const json plan = feedMarkPlan(job, job.grid());
+    const bool expected = R - std::sqrt(R * R - w * w) < p.heightMm;
+    const json& n = plan.at("predicted").at("neighbouring_passes");
+    EXPECT_EQ(n.at("may_cut_the_marks").get<bool>(), expected) << w;
+    EXPECT_EQ(n.at("step_over_mm").get<double>(), w);
+    (expected ? reach : clear) += 1;
+  }
+  EXPECT_EQ(reach, 2);
+  EXPECT_EQ(clear, 3);
 }
 
 TEST_F(FeedMarksReport, LinesThatCannotBeMeasuredSayWhy) {
