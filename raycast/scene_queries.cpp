@@ -1,8 +1,7 @@
-// The culling scene's queries: a cell's lowest height by one upward Embree ray, and the
-// region queries (gather the candidates of a square of cells from the tile grid, tighten
+// The culling scene's queries: a cell's lowest height from the tile grid's list under
+// its point (ascending bounds, each exact height shortening the rest), and the region
+// queries (gather the candidates of a square of cells from the tile grid, tighten
 // their planes, order them per block, and each cell's branch and bound among them).
-#include <embree3/rtcore.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -20,22 +19,6 @@ using namespace scene_detail;
 
 namespace {
 
-// One upward ray from below every box at (x, y), ending at `ceiling`.
-RTCRayHit upwardRay(double x, double y, double originZ, double ceiling) {
-  RTCRayHit rh;
-  rh.ray.org_x = float(x), rh.ray.org_y = float(y), rh.ray.org_z = float(originZ);
-  rh.ray.dir_x = 0, rh.ray.dir_y = 0, rh.ray.dir_z = 1;
-  rh.ray.tnear = 0;
-  rh.ray.tfar = roundUp(ceiling - originZ);
-  rh.ray.time = 0;
-  rh.ray.mask = ~0u;
-  rh.ray.id = 0;
-  rh.ray.flags = 0;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  return rh;
-}
-
 // True only if `move` is proven above z on every vertical line through the rectangle
 // [x0, x1] x [y0, y1]: the ray clearance of the disc round its centre that holds it
 // (SweptMove::clearsAbove; false for constant-axis moves and for no bound).
@@ -45,12 +28,9 @@ bool provenAboveOver(const SweptMove& move, double x0, double y0, double x1, dou
   return move.clearsAbove(0.5 * (x0 + x1), 0.5 * (y0 + y1), z, radius);
 }
 
-CellContext makeContext(double x, double y, double originZ, double ceiling,
-                        SweptScene::QueryCache* cache) {
+CellContext makeContext(double x, double y, double ceiling, SweptScene::QueryCache* cache) {
   CellContext cell;
-  rtcInitIntersectContext(&cell.embree);
   cell.x = x, cell.y = y;
-  cell.originZ = originZ;
   cell.best = ceiling;
   cell.evaluations = 0;
   cell.cache = cache;
@@ -60,13 +40,26 @@ CellContext makeContext(double x, double y, double originZ, double ceiling,
 
 }  // namespace
 
+bool scene_detail::tryTile(const SweptScene::Impl& impl, const TileBox& tile, CellContext& cell) {
+  const double bound = planeBoundAt(tile, cell.x, cell.y);
+  if (bound - planeSlack(bound) >= cell.best) return false;
+  const SweptMove& seg = impl.segments[tile.segment];
+  ++cell.evaluations;
+  SectionMemo* memo = memoOf(cell.cache, seg, tile.segment, cell.y);
+  const LowestPoint lp = seg.lowestPoint(cell.x, cell.y, memo, cell.best);
+  if (!lp.hit || !(lp.z < cell.best)) return false;
+  cell.best = lp.z;
+  cell.winner = tile.segment;
+  return true;
+}
+
 double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& evaluations,
                                 QueryCache* cache, uint32_t* winner) const {
   const uint32_t guess = winner ? *winner : UINT32_MAX;
   if (winner) *winner = UINT32_MAX;
   if (impl_->tiles.empty()) return ceiling;
-  CellContext cell = makeContext(x, y, impl_->originZ, ceiling, cache);
-  // The guessed segment's height, found first, shortens the ray before it starts.
+  CellContext cell = makeContext(x, y, ceiling, cache);
+  // The guessed segment's height, found first, prunes the list before it is read.
   if (guess < impl_->segments.size()) {
     SectionMemo* memo = memoOf(cache, impl_->segments[guess], guess, y);
     ++cell.evaluations;
@@ -74,8 +67,42 @@ double SweptScene::lowestHeight(double x, double y, double ceiling, uint64_t& ev
         impl_->segments[guess].lowestPoint(x, y, memo, hintCutoff(impl_->segments[guess], ceiling));
     if (lp.hit && lp.z < ceiling) cell.best = lp.z, cell.winner = guess;
   }
-  RTCRayHit rh = upwardRay(x, y, impl_->originZ, cell.best);
-  rtcIntersect1(impl_->scene, &cell.embree, &rh);
+  const TileStorage& tiles = impl_->tiles;
+  // Until a first height is found, the turning moves whose tip passes nearest the point
+  // first: they reach it, while many whose tile holds the point do not (their planes,
+  // sloping away, would sort them first), and a turning move's proof that it misses costs
+  // several times more against a high cutoff than against a low one (B6: 8x; Embree's
+  // traversal, front to back through a spatial hierarchy, happened to meet the near moves
+  // early). Constant-axis moves miss cheaply: they wait for the walk below.
+  bool turningTried = false;  // every turning tile under the ceiling asked, none below it
+  if (cell.winner == UINT32_MAX && impl_->turningMoves) {
+    thread_local std::vector<std::pair<double, uint32_t>> nearest;
+    nearest.clear();
+    impl_->grid->forEachUnder(
+        tiles, x, y, [&] { return cell.best; },
+        [&](uint32_t tile) {
+          const SweptMove& m = impl_->segments[tiles[tile].segment];
+          if (!m.turning()) return;
+          const double ax = m.start().x, ay = m.start().y;
+          const double dx = m.end().x - ax, dy = m.end().y - ay, len2 = dx * dx + dy * dy;
+          const double u =
+              len2 > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / len2, 0.0, 1.0) : 0;
+          nearest.emplace_back(std::hypot(ax + u * dx - x, ay + u * dy - y), tile);
+        });
+    std::sort(nearest.begin(), nearest.end());
+    for (size_t k = 0; k < nearest.size() && cell.winner == UINT32_MAX; ++k)
+      tryTile(*impl_, tiles[nearest[k].second], cell);
+    turningTried = cell.winner == UINT32_MAX;
+  }
+  // Then the grid's list under the point, in ascending bound, each height shortening the
+  // rest (those tried above are asked again if their bound allows: cheap against the
+  // lower cutoff).
+  impl_->grid->forEachUnder(
+      tiles, x, y, [&] { return cell.best; },
+      [&](uint32_t tile) {
+        if (turningTried && impl_->segments[tiles[tile].segment].turning()) return;
+        tryTile(*impl_, tiles[tile], cell);
+      });
   evaluations += cell.evaluations;
   if (winner) *winner = cell.winner;
   return std::min(cell.best, ceiling);

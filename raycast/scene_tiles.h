@@ -1,16 +1,12 @@
-// The culling scene's internals, shared by its two halves: building the tiles and
-// Embree's scene (swept_scene.cpp) and answering queries (scene_queries.cpp). Not part
+// The culling scene's internals, shared by its two halves: building the tiles and their
+// grid (swept_scene.cpp, tile_grid.cpp) and answering queries (scene_queries.cpp). Not part
 // of the raycast library's API (swept_scene.h is).
 #pragma once
 
-#include <embree3/rtcore.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <utility>
 #include <vector>
 
@@ -19,7 +15,7 @@
 namespace scallop {
 namespace scene_detail {
 
-// A tile primitive: its Embree box (world coordinates, float), its segment, and the
+// A culling tile: its box (world coordinates, float, rounded outwards), its segment, and the
 // supporting planes found while bounding it. Each plane z = a + b x + c y lies below
 // the whole swept solid, so max over planes at the exact cell centre is a lower bound
 // that is much tighter than the box's (which holds for the whole tile): a candidate
@@ -75,17 +71,18 @@ inline float roundUp(double v) {
   return std::nextafter(float(v), HUGE_VALF) + slack(v);
 }
 
-// The ray's context carries the exact (double) cell centre and the best height so far;
-// Embree hands it back to the intersect callback (the first member must be Embree's).
+// A cell's point query: the exact (double) cell centre and the best height so far.
 struct CellContext {
-  RTCIntersectContext embree;
-  double x, y;     // exact cell centre, mm
-  double originZ;  // the ray starts here, below every box
-  double best;     // lowest exact height found so far, mm
+  double x, y;  // exact cell centre, mm
+  double best;  // lowest exact height found so far, mm
   uint64_t evaluations;
   SweptScene::QueryCache* cache;  // may be null
   uint32_t winner;                // segment of `best`, or UINT32_MAX
 };
+
+// One tile met by a cell's query: unless its planes keep it at or above the best height
+// so far, its segment's exact height, kept if lower. True if it was.
+bool tryTile(const SweptScene::Impl& impl, const TileBox& tile, CellContext& cell);
 
 // The lower bound of a tile's planes at one point, or over a rectangle (each plane's
 // minimum over a rectangle is at a corner).
@@ -143,17 +140,11 @@ class TileGrid;  // tile_grid.h
 struct SweptScene::Impl {
   std::vector<SweptMove> segments;
   scene_detail::TileStorage tiles;
-  std::unique_ptr<scene_detail::TileGrid> grid;  // lists the tiles for gatherCandidates
+  std::unique_ptr<scene_detail::TileGrid> grid;  // lists the tiles for every query
   SceneStats stats;
-  double originZ = 0;
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-  std::string lastError;
-  std::atomic<int64_t> embreeBytes{0};  // Embree's allocations less its frees (its monitor)
-
-  // The tiles, and originZ (below every segment's box).
+  bool turningMoves = false;  // some segment's axis turns (lowestHeight's first search)
+  // Every segment's tiles, in segment order.
   void buildTiles(const SceneOptions& options);
-  void buildEmbree();
 };
 
 }  // namespace scallop

@@ -95,9 +95,9 @@ namespace {
 template <class Visit>
 size_t visitMoveSceneBytes(const Cutter& cutter, const ToolPath& path, const Box3& stock,
                            double spacing, const CuttingModel& cutting, Visit visit) {
-  // TileBox (152) + Embree's BVH share (measured: 370 on the scene of scene_memory_test)
-  // + the most the tile grid takes a tile.
-  constexpr double kBytesPerTile = 420 + scene_detail::TileGrid::kMaxBytesPerTile;
+  // The tile itself + the most the tile grid takes a tile.
+  constexpr double kBytesPerTile =
+      sizeof(scene_detail::TileBox) + scene_detail::TileGrid::kMaxBytesPerTile;
   const auto [R, flute] = envelopeSize(cutter);
   SceneOptions tiling;
   tiling.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);

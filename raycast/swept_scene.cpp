@@ -1,10 +1,8 @@
-// The Embree side of scallop, walked through once (after Embree's minimal tutorial):
-// a device, one scene, one user geometry whose primitives are (segment, xy tile)
-// boxes, a bounds callback that hands Embree those boxes, and an intersect callback
-// that runs the exact double-precision height and shortens the ray.
+// Building the culling scene: each segment's tiles with their proven planes and boxes,
+// then the tile grid that every query reads (tile_grid.h). The exact heights themselves
+// are the kernel's (SweptMove::lowestPoint), asked by scene_queries.cpp.
 #include "raycast/swept_scene.h"
 
-#include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -105,55 +103,6 @@ LowestPoint closedFormPlaneHint(const SweptMove& seg, double x, double y) {
 }
 
 }  // namespace scene_detail
-
-namespace {
-
-void boundsCallback(const RTCBoundsFunctionArguments* args) {
-  const auto* impl = static_cast<const SweptScene::Impl*>(args->geometryUserPtr);
-  const TileBox& t = impl->tiles[args->primID];
-  RTCBounds* b = args->bounds_o;
-  b->lower_x = t.lower[0], b->lower_y = t.lower[1], b->lower_z = t.lower[2];
-  b->upper_x = t.upper[0], b->upper_y = t.upper[1], b->upper_z = t.upper[2];
-}
-
-void intersectCallback(const RTCIntersectFunctionNArguments* args) {
-  // scallop only traces single rays (rtcIntersect1), so N == 1.
-  if (!args->valid[0]) return;
-  const auto* impl = static_cast<const SweptScene::Impl*>(args->geometryUserPtr);
-  auto* cell = reinterpret_cast<CellContext*>(args->context);
-  const TileBox& tile = impl->tiles[args->primID];
-  const double bound = planeBoundAt(tile, cell->x, cell->y);
-  if (bound - planeSlack(bound) >= cell->best) return;
-  const SweptMove& seg = impl->segments[tile.segment];
-  ++cell->evaluations;
-  SectionMemo* memo = memoOf(cell->cache, seg, tile.segment, cell->y);
-  const LowestPoint lp = seg.lowestPoint(cell->x, cell->y, memo, cell->best);
-  if (!lp.hit || !(lp.z < cell->best)) return;
-  cell->best = lp.z;
-  cell->winner = tile.segment;
-  // Shorten the ray to (just above) the new best: boxes that start higher are culled,
-  // while any segment that could still be lower has a box starting below it.
-  auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
-  rayhit->ray.tfar = roundUp(lp.z - cell->originZ);
-  rayhit->hit.geomID = args->geomID;
-  rayhit->hit.primID = args->primID;
-}
-
-// Embree reports errors through a C callback; exceptions must not cross it, so the
-// message is kept and thrown after the call returns.
-void deviceError(void* user, RTCError code, const char* message) {
-  auto* last = static_cast<std::string*>(user);
-  *last = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
-}
-
-// Embree's memory monitor: it reports every allocation (bytes > 0) and free (< 0); the
-// scene keeps the net sum for its accounting (SceneStats::embreeBytes).
-bool embreeMemory(void* user, ssize_t bytes, bool /*post*/) {
-  static_cast<std::atomic<int64_t>*>(user)->fetch_add(int64_t(bytes), std::memory_order_relaxed);
-  return true;
-}
-
-}  // namespace
 
 SectionMemo* SweptScene::QueryCache::memoFor(uint32_t segment, double y) {
   uint64_t bits;
@@ -291,14 +240,7 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
     g.ny = std::max(1, int(std::ceil((box.max.y - box.min.y) / T)));
   });
   size_t most = 0;  // tiles before any is dropped: the kept ones' bound
-  // The rays start below every segment's box: from the boxes just computed (each costs
-  // six support points; a second pass over the segments was 8 % of B9's scene build).
-  double zMin = stockTop;
-  for (const SegmentGrid& g : grids) {
-    most += size_t(g.nx) * size_t(g.ny);
-    zMin = std::min(zMin, g.box.min.z);
-  }
-  originZ = zMin - 1;
+  for (const SegmentGrid& g : grids) most += size_t(g.nx) * size_t(g.ny);
   // Room for every tile, of which only those kept are ever written (the allocator leaves
   // the rest untouched, so the pages past them are never resident).
   tiles.reserve(most);
@@ -344,40 +286,19 @@ void SweptScene::Impl::buildTiles(const SceneOptions& options) {
   stats.tiles = tiles.size();
 }
 
-void SweptScene::Impl::buildEmbree() {
-  device = rtcNewDevice(nullptr);
-  if (!device) throw std::runtime_error("Embree: cannot create a device");
-  rtcSetDeviceErrorFunction(device, deviceError, &lastError);
-  rtcSetDeviceMemoryMonitorFunction(device, embreeMemory, &embreeBytes);
-  scene = rtcNewScene(device);
-  // Robust traversal: a vertical ray exactly on a box face must not slip through.
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
-
-  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-  rtcSetGeometryUserPrimitiveCount(geom, unsigned(tiles.size()));
-  rtcSetGeometryUserData(geom, this);
-  rtcSetGeometryBoundsFunction(geom, boundsCallback, this);
-  rtcSetGeometryIntersectFunction(geom, intersectCallback);
-  rtcCommitGeometry(geom);
-  rtcAttachGeometry(scene, geom);
-  rtcReleaseGeometry(geom);
-  rtcCommitScene(scene);
-  if (rtcGetDeviceError(device) != RTC_ERROR_NONE || !lastError.empty())
-    throw std::runtime_error(lastError.empty() ? "Embree: scene build failed" : lastError);
-}
-
 SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& options)
     : impl_(std::make_unique<Impl>()), regionHalfSize_(options.regionHalfSize) {
   const auto t0 = std::chrono::steady_clock::now();
   impl_->segments = std::move(segments);
   if (impl_->segments.size() > UINT32_MAX) throw std::runtime_error("too many segments");
-  for (SweptMove& s : impl_->segments) s.setContactKnotSpacing(options.contactKnotSpacing);
+  for (SweptMove& s : impl_->segments) {
+    s.setContactKnotSpacing(options.contactKnotSpacing);
+    impl_->turningMoves = impl_->turningMoves || s.turning();
+  }
   impl_->stats.segments = impl_->segments.size();
   impl_->buildTiles(options);
   impl_->grid = std::make_unique<TileGrid>();
   impl_->grid->build(impl_->tiles, options.regionHalfSize);
-  impl_->buildEmbree();
   SceneStats& stats = impl_->stats;
   for (const SweptMove& s : impl_->segments)
     stats.moveBytes += SweptMove::bytesPerMove(s.turning(), s.teeth() != nullptr, s.hasTipBall(),
@@ -385,14 +306,10 @@ SweptScene::SweptScene(std::vector<SweptMove> segments, const SceneOptions& opti
   // The tiles kept (their storage's capacity past them is never touched).
   stats.tileBytes = impl_->tiles.size() * sizeof(TileBox);
   stats.gridBytes = impl_->grid->bytes();
-  stats.embreeBytes = size_t(std::max<int64_t>(0, impl_->embreeBytes.load()));
   stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-SweptScene::~SweptScene() {
-  if (impl_->scene) rtcReleaseScene(impl_->scene);
-  if (impl_->device) rtcReleaseDevice(impl_->device);
-}
+SweptScene::~SweptScene() = default;
 
 const std::vector<SweptMove>& SweptScene::segments() const {
   return impl_->segments;

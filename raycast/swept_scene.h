@@ -1,15 +1,17 @@
-// SweptScene: an Embree scene over the swept solids of a tool path, used to find, for
+// SweptScene: the culling scene over the swept solids of a tool path, used to find, for
 // each vertical line, the few swept segments whose exact height can be the lowest.
 //
 // Culling, not approximation: every segment's footprint is cut into xy tiles, and each
-// tile becomes one Embree user primitive whose box starts at a *proven* lower bound of
-// the segment's heights over the tile (from supporting planes of the convex swept
-// solid). A ray cast upwards from below meets the boxes in order of those bounds; each
-// exact evaluation lowers the ray's far end, so boxes that start above the lowest
-// height found so far are never entered. Heights themselves are always computed in
-// double by SweptMove::lowestPoint. Squares of cells gather their candidates from a 2-D
-// grid of the same tiles instead (tile_grid.h): a gathering ray, never shortened, would
-// visit every box over the line.
+// tile gets a box that starts at a *proven* lower bound of the segment's heights over
+// the tile (from supporting planes of the convex swept solid). A 2-D grid of buckets
+// lists every tile over each bucket in ascending order of its bound there (tile_grid.h).
+// A cell reads its bucket's list in that order, evaluates each segment whose planes can
+// still go below the lowest height found so far, and stops at the first bound at or above
+// it, as an upward ray that each hit shortens would (until stop 43 an Embree BVH of the
+// tiles' boxes did this; the grid, built for the region queries anyway, gives the same
+// heights with no hierarchy to build: docs/performance.md, B9). Heights themselves are
+// always computed in double by SweptMove::lowestPoint. Squares of cells gather their
+// candidates from the same grid.
 #pragma once
 
 #include <cmath>
@@ -39,8 +41,8 @@ struct SceneOptions {
 };
 
 // Programs with fewer cells than this per move get one culling tile a move. A tile costs
-// the build 5 exact evaluations and its share of the tile grid and of Embree's hierarchy
-// (~1 KB in all); finer tiles pay back only through the cells they cull for, ~4 exact
+// the build 5 exact evaluations and its place in the tile grid (with Embree's hierarchy,
+// until stop 43, ~1 KB in all); finer tiles pay back only through the cells they cull for, ~4 exact
 // evaluations a cell shared by every move over it. Measured on B9 (callgrind, 4 mm, 6
 // cells a move): one tile a move instead of ~19 builds in 133 instead of 633 million
 // instructions and casts in 75 instead of 71, the same heights; B3 and B4 (4 300 and
@@ -57,14 +59,14 @@ double cullingTileSide(double cutterRadius, double moveLength, double boxArea,
 
 struct SceneStats {
   size_t segments = 0;          // swept moves (one primitive per cutting move)
-  size_t tiles = 0;             // Embree primitives
+  size_t tiles = 0;             // culling tiles
   size_t boundEvaluations = 0;  // exact evaluations spent on building the bounds
   double buildSeconds = 0;
   // The scene's own accounting of what it holds once built, bytes: the moves (the
-  // SweptMove objects and what they own, SweptMove::bytesPerMove), the culling tiles,
-  // the tile grid, and Embree's allocations (its memory monitor, net of frees).
-  size_t moveBytes = 0, tileBytes = 0, gridBytes = 0, embreeBytes = 0;
-  size_t bytes() const { return moveBytes + tileBytes + gridBytes + embreeBytes; }
+  // SweptMove objects and what they own, SweptMove::bytesPerMove), the culling tiles
+  // and the tile grid.
+  size_t moveBytes = 0, tileBytes = 0, gridBytes = 0;
+  size_t bytes() const { return moveBytes + tileBytes + gridBytes; }
 };
 
 class SweptScene {

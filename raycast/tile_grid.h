@@ -55,6 +55,23 @@ class TileGrid {
     }
   }
 
+  // A point query: calls visit(tile) for every tile whose own box holds (x, y) and whose
+  // bound over the bucket of (x, y) is below top(), in ascending order of that bound;
+  // top() is read before each tile, so a visit that finds a lower height shortens the
+  // rest, as a ray's far end is shortened.
+  template <class Top, class Visit>
+  void forEachUnder(const TileStorage& tiles, double x, double y, Top&& top, Visit&& visit) const {
+    const int64_t i = bucketOf(x, x0_, nx_), j = bucketOf(y, y0_, ny_);
+    if (i < 0 || j < 0) return;
+    const size_t b = size_t(j * nx_ + i);
+    for (size_t e = first_[b]; e < first_[b + 1]; ++e) {
+      if (!(double(entries_[e].bound) < top())) return;
+      const TileBox& t = tiles[entries_[e].tile];
+      if (x >= t.lower[0] && x <= t.upper[0] && y >= t.lower[1] && y <= t.upper[1])
+        visit(entries_[e].tile);
+    }
+  }
+
  private:
   // A tile's box grown by the regions' half side: where their centres can be for the
   // tile to overlap them.

@@ -178,28 +178,26 @@ struct CaseResult {
 
 json caseJson(const CaseResult& r) {
   const ExactRun& t = r.timed;
-  json j = {{"name", r.bench.name},
-            {"description", r.bench.description},
-            {"cells", r.bench.grid.cells()},
-            {"spacing_mm", r.bench.grid.spacing},
-            {"moves", r.bench.path.cuttingMoves()},
-            {"segments", t.scene.segments},
-            {"culling_tiles", t.scene.tiles},
-            {"scene_bytes", t.scene.bytes()},
-            {"scene_bytes_detail",
-             {{"moves", t.scene.moveBytes},
-              {"tiles", t.scene.tileBytes},
-              {"grid", t.scene.gridBytes},
-              {"embree", t.scene.embreeBytes}}},
-            {"evals_per_cell", t.cast.evaluationsPerCell()},
-            {"seconds", t.seconds},
-            {"scene_seconds", t.scene.buildSeconds},
-            {"cast_seconds", t.cast.seconds},
-            {"mcells_per_s", double(t.cast.cells) / t.seconds / 1e6},
-            {"peak_rss_mb", r.peakRssMb},
-            {"threads", r.threads},
-            {"seconds_1_thread", r.single.seconds},
-            {"heights_hash", fmt::format("{:016x}", t.hash)}};
+  json j = {
+      {"name", r.bench.name},
+      {"description", r.bench.description},
+      {"cells", r.bench.grid.cells()},
+      {"spacing_mm", r.bench.grid.spacing},
+      {"moves", r.bench.path.cuttingMoves()},
+      {"segments", t.scene.segments},
+      {"culling_tiles", t.scene.tiles},
+      {"scene_bytes", t.scene.bytes()},
+      {"scene_bytes_detail",
+       {{"moves", t.scene.moveBytes}, {"tiles", t.scene.tileBytes}, {"grid", t.scene.gridBytes}}},
+      {"evals_per_cell", t.cast.evaluationsPerCell()},
+      {"seconds", t.seconds},
+      {"scene_seconds", t.scene.buildSeconds},
+      {"cast_seconds", t.cast.seconds},
+      {"mcells_per_s", double(t.cast.cells) / t.seconds / 1e6},
+      {"peak_rss_mb", r.peakRssMb},
+      {"threads", r.threads},
+      {"seconds_1_thread", r.single.seconds},
+      {"heights_hash", fmt::format("{:016x}", t.hash)}};
   // Issue 37's figures: scene build in moves a second (the program's cutting moves), and
   // bytes a move, the scene's own accounting and the peak beyond the map's heights.
   const double moves = double(std::max<size_t>(1, r.bench.path.cuttingMoves()));
