@@ -12,11 +12,9 @@
 
 namespace scallop {
 
-namespace {
-
-Vec3 mirrorY(const Vec3& v) {
-  return {v.x, -v.y, v.z};
-}
+// The sweep's entries in the making, members of ToolPathSweeper::State (a named
+// namespace: a class with external linkage holds them).
+namespace sweep_state {
 
 // One entry of the output before it is built: a turning move (built at once, in path
 // order: each takes the next knots identity) or a constant-axis segment, which later
@@ -27,6 +25,30 @@ struct Planned {
   size_t cutter = 0;
   Vec3 from, to, axis;
 };
+
+// Teeth: the spindle angle at the start of a planned entry and its rate, rad per mm of
+// the tip's path: phi(s) = phi0 + 2 pi s / (flutes fz), s along every move (rapids too)
+// in file order. fmod by 2 pi is exact, and keeps phi small.
+struct Spindle {
+  double phaseStart, radPerMm;
+  uint16_t tool;
+  bool counterClockwise;
+  // A turning CL move's mirror image in y = 0, built as the mirrored job builds it
+  // (ToothSweep::Mirror); arcs and machine moves have none. A pointer: the entry of
+  // every other move stays small.
+  std::unique_ptr<const PoseCurve> mirrored;
+};
+
+}  // namespace sweep_state
+
+using sweep_state::Planned;
+using sweep_state::Spindle;
+
+namespace {
+
+Vec3 mirrorY(const Vec3& v) {
+  return {v.x, -v.y, v.z};
+}
 
 // True when the constant-axis entry `a` is continued by the segment (bStart, bEnd) along
 // the same line, in the same sense, with the same axis and cutter: then the union of
@@ -71,71 +93,91 @@ Box3 segmentReach(const Cutter& c, const Vec3& from, const Vec3& to, const Vec3&
 
 // Entries are built a batch at a time: the constant-axis segments of a batch in parallel
 // (each once, with its final ends: a merged segment was rebuilt at every move it took
-// in), then appended in path order. With a window, an entry whose box misses it is not
-// built (a segment) or not kept (a turning move); `kept` gets one flag an entry.
+// in), then appended in path order, with their teeth. With a window, an entry whose box
+// misses it is not built (a segment) or not kept (a turning move).
 constexpr size_t kBatch = 4096;
 
-void buildPlanned(const std::vector<Cutter>& swept, std::vector<Planned>& planned, size_t count,
-                  std::vector<SweptMove>& turning, std::vector<SweptMove>& out,
-                  const SweepWindow* window, std::vector<bool>& kept) {
+}  // namespace
+
+struct ToolPathSweeper::State {
+  std::vector<Cutter> cutters;
+  std::vector<Cutter> swept;  // the cutter each tool sweeps: with teeth, its spindle envelope
+  CuttingModel cutting;
+  bool teeth = false;
+  std::optional<SweepWindow> window;
+  std::vector<SweptMove> out;
+  std::vector<Planned> planned;
+  std::vector<SweptMove> turning;  // the turning entries of `planned`, built
+  std::vector<Spindle> spindle;    // teeth: one a planned entry
+  double phase = 0;                // rad, the spindle's at the next move's start
+  size_t moves = 0;                // moves added so far (their numbers in messages)
+
+  void build(size_t count);
+  void attachTeeth(SweptMove& m, const Spindle& sp) const;
+  void add(const ToolPath& path);
+};
+
+void ToolPathSweeper::State::build(size_t count) {
   std::vector<std::optional<SweptSegment>> segments(count);
+  const SweepWindow* w = window ? &*window : nullptr;
   tbb::parallel_for(size_t(0), count, [&](size_t i) {
     const Planned& p = planned[i];
     if (p.turning) return;
     const Cutter& c = swept[p.cutter];
-    if (!window || window->meets(segmentReach(c, p.from, p.to, p.axis)))
+    if (!w || w->meets(segmentReach(c, p.from, p.to, p.axis)))
       segments[i].emplace(c, p.from, p.to, p.axis);
   });
   for (size_t i = 0; i < count; ++i) {
+    bool keep = false;
     if (planned[i].turning) {
       SweptMove& m = turning[planned[i].built];
-      const bool keep = !window || window->meets(m.bounds());
+      keep = !w || w->meets(m.bounds());
       if (keep) out.push_back(std::move(m));
-      kept.push_back(keep);
-    } else {
-      if (segments[i]) out.emplace_back(*segments[i]);
-      kept.push_back(segments[i].has_value());
+    } else if (segments[i]) {
+      out.emplace_back(*segments[i]);
+      keep = true;
     }
+    if (keep && teeth) attachTeeth(out.back(), spindle[i]);
   }
   planned.erase(planned.begin(), planned.begin() + std::ptrdiff_t(count));
+  if (teeth) spindle.erase(spindle.begin(), spindle.begin() + std::ptrdiff_t(count));
   if (planned.empty() || !planned.front().turning) turning.clear();
 }
 
-}  // namespace
-
-std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path,
-                                     const CuttingModel& cutting, const SweepWindow* window) {
-  std::vector<SweptMove> out;
-  std::vector<bool> kept;  // an entry a planned move: kept in `out` (the window meets it)
-  // Teeth: the spindle angle at the start of each entry of `out` and its rate, rad per
-  // mm of the tip's path: phi(s) = phi0 + 2 pi s / (flutes fz), s along every move
-  // (rapids too) in file order. fmod by 2 pi is exact, and keeps phi small.
-  struct Spindle {
-    double phaseStart, radPerMm;
-    uint16_t tool;
-    bool counterClockwise;
-    // A turning CL move's mirror image in y = 0, built as the mirrored job builds it
-    // (ToothSweep::Mirror); arcs and machine moves have none. A pointer: the entry of
-    // every other move stays small (one an entry of `out`, 10^7 in a large program).
-    std::unique_ptr<const PoseCurve> mirrored;
+// A move's edges: the cutter with its teeth (the move holds its spindle envelope),
+// phi(t) = phaseStart + radPerMm len t, len the tip's path length (an arc's: its speed is
+// constant, so phi is linear in the distance along it too). A lowered envelope's move is
+// raised back to the spindle's tip.
+void ToolPathSweeper::State::attachTeeth(SweptMove& m, const Spindle& sp) const {
+  const double len = m.curve().pathLength();
+  const Cutter& cutter = cutters[sp.tool];
+  const double drop = cutter.teeth.axialReach();
+  auto raised = [drop](const PoseCurve& curve) {
+    if (!(drop > 0)) return curve;
+    const Vec3 axis = curve.axis(0), raise = drop * axis;
+    return PoseCurve::linear({curve.tipStart() + raise, axis}, {curve.tipEnd() + raise, axis});
   };
-  std::vector<Spindle> spindle;
-  const bool teeth = cutting.teeth();
-  // The cutter each tool sweeps: with teeth, its spindle envelope.
-  std::vector<Cutter> swept;
-  for (const Cutter& c : cutters) swept.push_back(teeth ? c.spindleEnvelope() : c);
-  // Room for every cutting move at once, so the moves are never copied as the vector
-  // grows. Merged moves leave the end of the room untouched, so never resident (the
-  // peak is the same as growing by doubling, which glibc's mremap does without copies:
-  // B9 --area 40, 355.1 MB either way).
-  size_t cuttingMoves = 0;
-  for (const Move& mv : path.moves) cuttingMoves += !mv.rapid;
-  out.reserve(cuttingMoves);
-  std::vector<Planned> planned;
-  std::vector<SweptMove> turning;  // the turning entries of `planned`, built
-  double phase = std::fmod(cutting.phaseDeg * kPi / 180, 2 * kPi);
+  // A CCW move is computed on its mirror image, as the mirrored job computes it.
+  std::optional<ToothSweep::Mirror> mirror;
+  if (sp.counterClockwise && m.segment()) {
+    const SweptSegment& seg = *m.segment();
+    const auto envelope = std::make_shared<const SweptSegment>(
+        swept[sp.tool], mirrorY(seg.start()), mirrorY(seg.end()), mirrorY(seg.axis()));
+    mirror = ToothSweep::Mirror{raised(PoseCurve::linear({envelope->start(), envelope->axis()},
+                                                         {envelope->end(), envelope->axis()})),
+                                envelope};
+  } else if (sp.counterClockwise && sp.mirrored) {
+    mirror = ToothSweep::Mirror{*sp.mirrored, nullptr};
+  }
+  m.attachTeeth(std::make_shared<ToothSweep>(cutter, raised(m.curve()), sp.phaseStart,
+                                             sp.radPerMm * len, sp.counterClockwise,
+                                             mirror ? &*mirror : nullptr));
+}
+
+void ToolPathSweeper::State::add(const ToolPath& path) {
   for (size_t k = 0; k < path.moves.size(); ++k) {
     const Move& mv = path.moves[k];
+    const size_t number = ++moves;
     double radPerMm = 0;
     if (teeth && mv.tool < cutters.size()) {
       const double fz = mv.feedPerTooth > 0 ? mv.feedPerTooth : cutting.feedPerTooth;
@@ -148,7 +190,7 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
                               : length(mv.to.tip - mv.from.tip);
     phase = std::fmod(phase + radPerMm * pathMm, 2 * kPi);
     if (mv.rapid) continue;
-    const std::string where = "path move " + std::to_string(k + 1);
+    const std::string where = "path move " + std::to_string(number);
     if (mv.tool >= cutters.size())
       throw InputError(where, "tool index " + std::to_string(mv.tool) + " has no cutter (" +
                                   std::to_string(cutters.size()) + " given)");
@@ -193,14 +235,12 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
         if (teeth && restart) spindle.back().phaseStart = phaseStart;
         continue;
       }
-      if (planned.size() > kBatch)
-        buildPlanned(swept, planned, planned.size() - 1, turning, out, window, kept);
+      if (planned.size() > kBatch) build(planned.size() - 1);
       Planned p;
       p.cutter = mv.tool, p.from = curve.tipStart(), p.to = curve.tipEnd(), p.axis = axis;
       planned.push_back(p);
     } else {
-      if (planned.size() > kBatch)
-        buildPlanned(swept, planned, planned.size(), turning, out, window, kept);
+      if (planned.size() > kBatch) build(planned.size());
       Planned p;
       p.turning = true, p.built = turning.size(), p.cutter = mv.tool;
       turning.emplace_back(cutter, curve);
@@ -213,42 +253,41 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
           PoseCurve::linear({mirrorY(mv.from.tip), mirrorY(mv.from.axis)},
                             {mirrorY(mv.to.tip), mirrorY(mv.to.axis)}));
   }
-  buildPlanned(swept, planned, planned.size(), turning, out, window, kept);
-  if (teeth) {
-    // Each move's edges: the cutter with its teeth (the move holds its spindle
-    // envelope), phi(t) = phaseStart + radPerMm len t, len the tip's path length (an
-    // arc's: its speed is constant, so phi is linear in the distance along it too). A
-    // lowered envelope's move is raised back to the spindle's tip.
-    size_t i = 0;
-    for (SweptMove& m : out) {
-      while (!kept[i]) ++i;
-      const Spindle& sp = spindle[i++];
-      const double len = m.curve().pathLength();
-      const Cutter& cutter = cutters[sp.tool];
-      const double drop = cutter.teeth.axialReach();
-      auto raised = [drop](const PoseCurve& curve) {
-        if (!(drop > 0)) return curve;
-        const Vec3 axis = curve.axis(0), raise = drop * axis;
-        return PoseCurve::linear({curve.tipStart() + raise, axis}, {curve.tipEnd() + raise, axis});
-      };
-      // A CCW move is computed on its mirror image, as the mirrored job computes it.
-      std::optional<ToothSweep::Mirror> mirror;
-      if (sp.counterClockwise && m.segment()) {
-        const SweptSegment& seg = *m.segment();
-        const auto envelope = std::make_shared<const SweptSegment>(
-            swept[sp.tool], mirrorY(seg.start()), mirrorY(seg.end()), mirrorY(seg.axis()));
-        mirror = ToothSweep::Mirror{raised(PoseCurve::linear({envelope->start(), envelope->axis()},
-                                                             {envelope->end(), envelope->axis()})),
-                                    envelope};
-      } else if (sp.counterClockwise && sp.mirrored) {
-        mirror = ToothSweep::Mirror{*sp.mirrored, nullptr};
-      }
-      m.attachTeeth(std::make_shared<ToothSweep>(cutter, raised(m.curve()), sp.phaseStart,
-                                                 sp.radPerMm * len, sp.counterClockwise,
-                                                 mirror ? &*mirror : nullptr));
-    }
-  }
-  return out;
+}
+
+ToolPathSweeper::ToolPathSweeper(std::vector<Cutter> cutters, const CuttingModel& cutting,
+                                 const SweepWindow* window, size_t cuttingMoves)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.cutters = std::move(cutters);
+  s.cutting = cutting;
+  s.teeth = cutting.teeth();
+  for (const Cutter& c : s.cutters) s.swept.push_back(s.teeth ? c.spindleEnvelope() : c);
+  if (window) s.window = *window;
+  s.phase = std::fmod(cutting.phaseDeg * kPi / 180, 2 * kPi);
+  // Room for every entry at once, so the moves are never copied as the vector grows.
+  // Merged moves leave the end of the room untouched, so never resident (the peak is the
+  // same as growing by doubling, which glibc's mremap does without copies: B9 --area 40,
+  // 355.1 MB either way).
+  s.out.reserve(cuttingMoves);
+}
+
+ToolPathSweeper::~ToolPathSweeper() = default;
+
+void ToolPathSweeper::add(const ToolPath& part) {
+  state_->add(part);
+}
+
+std::vector<SweptMove> ToolPathSweeper::finish() {
+  state_->build(state_->planned.size());
+  return std::move(state_->out);
+}
+
+std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const ToolPath& path,
+                                     const CuttingModel& cutting, const SweepWindow* window) {
+  ToolPathSweeper sweeper(cutters, cutting, window, path.cuttingMoves());
+  sweeper.add(path);
+  return sweeper.finish();
 }
 
 std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "sweep/cutter.h"
@@ -48,5 +49,26 @@ std::vector<SweptMove> sweepToolPath(const std::vector<Cutter>& cutters, const T
 std::vector<SweptMove> sweepToolPath(const Cutter& cutter, const ToolPath& path,
                                      const CuttingModel& cutting = {},
                                      const SweepWindow* window = nullptr);
+
+// sweepToolPath of a path handed over in parts, in order (a file read as a stream, a band
+// at a time: tools/run/tiled_simulation.h), without the whole path in memory: the same
+// entries, bit for bit, as sweepToolPath(cutters, whole path, cutting, window). Each part
+// is a ToolPath whose moves continue the previous part's (the same move numbers in the
+// messages) and whose Move::arc and Move::rotary index its own arrays; its `cutters` are
+// not read (the constructor's are). What the sweep carries from move to move (the
+// segment being merged, the spindle's phase) carries across parts.
+class ToolPathSweeper {
+ public:
+  // `cuttingMoves`: room reserved for the entries (the path's cutting moves, or fewer).
+  ToolPathSweeper(std::vector<Cutter> cutters, const CuttingModel& cutting,
+                  const SweepWindow* window, size_t cuttingMoves);
+  ~ToolPathSweeper();
+  void add(const ToolPath& part);
+  std::vector<SweptMove> finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace scallop
