@@ -173,11 +173,17 @@ std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& pat
                                        const Box3& stock, double spacing,
                                        const SimulationOptions& options,
                                        const SweepWindow* window) {
-  SceneOptions sceneOptions = sceneOptionsFor(stock, spacing, options);
   // The whole program's cells a move, also for a window's scene: the same culling tiles.
-  sceneOptions.cellsPerMove = programCellsPerMove(cutter, path, stock, spacing);
-  return std::make_unique<SweptScene>(sweepToolPath(cutter, path, options.cutting, window),
-                                      sceneOptions);
+  return buildSceneOfMoves(sweepToolPath(cutter, path, options.cutting, window), stock, spacing,
+                           programCellsPerMove(cutter, path, stock, spacing), options);
+}
+
+std::unique_ptr<SweptScene> buildSceneOfMoves(std::vector<SweptMove> moves, const Box3& stock,
+                                              double spacing, double cellsPerMove,
+                                              const SimulationOptions& options) {
+  SceneOptions sceneOptions = sceneOptionsFor(stock, spacing, options);
+  sceneOptions.cellsPerMove = cellsPerMove;
+  return std::make_unique<SweptScene>(std::move(moves), sceneOptions);
 }
 
 SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3& stock,

@@ -79,6 +79,13 @@ std::unique_ptr<SweptScene> buildScene(const Cutter& cutter, const ToolPath& pat
                                        const SimulationOptions& options = {},
                                        const SweepWindow* window = nullptr);
 
+// The culling scene of moves already swept (ToolPathSweeper: a path streamed from its
+// file), `cellsPerMove` the whole program's programCellsPerMove: the scene buildScene
+// makes of the same moves, with the same culling tiles.
+std::unique_ptr<SweptScene> buildSceneOfMoves(std::vector<SweptMove> moves, const Box3& stock,
+                                              double spacing, double cellsPerMove,
+                                              const SimulationOptions& options = {});
+
 // Heights of `stock` (its top is the initial height) after `path`, on `grid`. With
 // options.frame, the frame's heights (cells start at the stock's exit height, those
 // without material end NaN, those cut below -depth hold -depth).

@@ -95,5 +95,67 @@ TEST(ToolPathSweep, HalfTurnIsRefusedByMove) {
   }
 }
 
+// A path handed over in parts (a file streamed a band at a time) sweeps to the same
+// entries, bit for bit, as the whole path: merges and the spindle's phase carry across
+// the parts' boundaries, with and without a window.
+TEST(ToolPathSweep, APathInPartsSweepsToTheWholePathsMoves) {
+  const std::vector<Cutter> cutters = {Cutter::make(CutterType::Ball, 0.5),
+                                       Cutter::make(CutterType::Bull, 0.4, 0.1)};
+  const Vec3 up{0, 0, 1};
+  ToolPath path;
+  for (int pass = 0; pass < 6; ++pass) {
+    const double y = 0.6 * pass;
+    const uint16_t tool = uint16_t(pass % 2);
+    // Points 3 and 6 of a pass are raised: the level pairs between them merge.
+    auto z = [](int k) { return k == 3 || k == 6 ? -0.1 : -0.2; };
+    for (int k = 0; k < 9; ++k) {
+      const double z0 = z(k), z1 = z(k + 1);
+      Move m = cut({0.3 * k, y, z0}, {0.3 * (k + 1), y, z1}, up, up);
+      m.tool = tool;
+      m.feedPerTooth = 0.05 + 0.01 * pass;
+      m.spindle = int8_t(pass % 3 == 2 ? -1 : 1);
+      path.moves.push_back(m);
+    }
+    Move turn = cut({2.7, y, -0.2}, {2.9, y + 0.3, -0.15}, up, normalize(Vec3{0.1, 0, 1}));
+    turn.tool = tool, turn.feedPerTooth = 0.06;
+    path.moves.push_back(turn);
+    path.moves.push_back(Move{{{2.9, y + 0.3, 1}, up}, {{0, y + 0.6, 1}, up}, true});
+  }
+  CuttingModel teeth;
+  teeth.kind = CuttingModelKind::Teeth;
+  teeth.phaseDeg = 30;
+  const SweepWindow window{-1, 1.0, 4, 2.0};
+  for (const CuttingModel& cutting : {CuttingModel(), teeth})
+    for (const SweepWindow* w : {static_cast<const SweepWindow*>(nullptr), &window})
+      for (size_t partMoves : {size_t(1), size_t(4), size_t(7)}) {
+        const std::vector<SweptMove> whole = sweepToolPath(cutters, path, cutting, w);
+        ToolPathSweeper sweeper(cutters, cutting, w, path.cuttingMoves());
+        for (size_t k = 0; k < path.moves.size(); k += partMoves) {
+          ToolPath part;
+          part.moves.assign(
+              path.moves.begin() + std::ptrdiff_t(k),
+              path.moves.begin() + std::ptrdiff_t(std::min(path.moves.size(), k + partMoves)));
+          sweeper.add(part);
+        }
+        const std::vector<SweptMove> parts = sweeper.finish();
+        ASSERT_EQ(parts.size(), whole.size()) << partMoves;
+        ASSERT_LT(whole.size(), path.cuttingMoves());  // some moves merged
+        for (size_t e = 0; e < whole.size(); ++e) {
+          ASSERT_EQ(parts[e].start(), whole[e].start());
+          ASSERT_EQ(parts[e].end(), whole[e].end());
+          ASSERT_EQ(parts[e].turning(), whole[e].turning());
+          for (double x = -0.5; x < 3.5; x += 0.23)
+            for (double dy = -0.6; dy < 0.9; dy += 0.17) {
+              const double y = whole[e].start().y + dy;
+              const LowestPoint a = parts[e].lowestPoint(x, y), b = whole[e].lowestPoint(x, y);
+              ASSERT_EQ(a.hit, b.hit);
+              if (a.hit) {
+                ASSERT_EQ(a.z, b.z) << "entry " << e << " at " << x << ", " << y;
+              }
+            }
+        }
+      }
+}
+
 }  // namespace
 }  // namespace scallop

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "base/input_error.h"
 #include "tools/cli/command.h"
@@ -116,7 +117,7 @@ int printBands(const SimulateArgs& args) {
 
 int runSimulate(const SimulateArgs& args) {
   const RunSettings& run = args.run;
-  const Job job = loadSimulateJob(args);
+  Job job = loadSimulateJob(args);
   ProgressBar bar("simulating");
   RunSettings settings = run;
   settings.progress = [&bar](int64_t done, int64_t total) { bar.update(done, total); };
@@ -124,7 +125,7 @@ int runSimulate(const SimulateArgs& args) {
     bar.finish();
     throwIfInterrupted();  // a Ctrl-C during the last tiles: write nothing
   };
-  const RunOutcome outcome = runSimulation(job, settings);
+  const RunOutcome outcome = runSimulation(std::move(job), settings);
   if (run.quiet)
     std::fputs(reportText(outcome.document).c_str(), stdout);
   else

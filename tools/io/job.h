@@ -72,6 +72,9 @@ struct Job {
   PathWarnings pathWarnings;
   IgnoredWords ignoredWords;         // words of the file that change no geometry
   std::vector<int64_t> toolNumbers;  // T number of path.cutters[k] (multi-tool files)
+  // The options the path file was read with (pathOptions() when it was read: its flute
+  // count may come from the file's own cutter), so that a re-read makes the same moves.
+  PathFileOptions pathReadOptions;
   // "design": {"stl": FILE, "gouge_tolerance": mm}: the part the path should make.
   std::string designFile;                      // resolved; empty without a design
   std::shared_ptr<const TriangleMesh> design;  // read by loadJobInputs

@@ -49,8 +49,17 @@ void ToolPathFile::addMove(const Pose& from, const Pose& to, bool rapid, int64_t
                       n, double(n) * perMove / double(1ull << 30), grown / double(1ull << 30),
                       available / double(1ull << 30)));
   }
+  if (takePart && n >= partMoves) handOverPart();
   path.moves.push_back(Move{from, to, rapid});
   moveLines.push_back(line);
+}
+
+void ToolPathFile::handOverPart() {
+  if (path.moves.empty()) return;
+  takePart(path);
+  movesHandedOver += path.moves.size();
+  path.moves.clear();
+  moveLines.clear();
 }
 
 bool parseDecimal(const std::string& token, double& value) {
@@ -237,11 +246,12 @@ void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3
   }
 }
 
-ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& options) {
+namespace {
+
+void readInto(const std::string& path, const PathFileOptions& options, ToolPathFile& file) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the tool-path file");
   const std::string ext = lowerExtension(path);
-  ToolPathFile file;
   file.source = path;
   file.memoryBytes = options.memoryBytes;
   if (ext == ".txt" || (ext == ".cl" && looksLikeClText(in))) {
@@ -256,6 +266,23 @@ ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& op
                                ".gcode, .tap (G-code) or .txt (x y z [i j k] per line)");
   }
   if (in.bad()) throw InputError(path, "read error");
+}
+
+}  // namespace
+
+ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& options) {
+  ToolPathFile file;
+  readInto(path, options, file);
+  return file;
+}
+
+ToolPathFile streamToolPathFile(const std::string& path, const PathFileOptions& options,
+                                size_t partMoves, const std::function<void(ToolPath&)>& takePart) {
+  ToolPathFile file;
+  file.takePart = takePart;
+  file.partMoves = std::max<size_t>(partMoves, 1);
+  readInto(path, options, file);
+  file.handOverPart();
   return file;
 }
 

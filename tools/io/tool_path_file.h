@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <optional>
@@ -113,10 +114,26 @@ struct ToolPathFile {
   // once) their next size is checked against the memory available (80 % of it, as every
   // refusal), and a program that outgrows it is refused naming the line it reached.
   void addMove(const Pose& from, const Pose& to, bool rapid, int64_t line);
+
+  // A file read as a stream (streamToolPathFile): the moves go to `takePart` a part of at
+  // most `partMoves` at a time, handed over just before the next move is added (so that
+  // a reader's changes to the last move are in), and path.moves and moveLines hold the
+  // moves of one part only; arcs and rotary motions (which moves index) stay whole.
+  std::function<void(ToolPath&)> takePart;
+  size_t partMoves = 0;
+  size_t movesHandedOver = 0;
+  void handOverPart();
 };
 
 // Reads `path` in the format of its extension. Throws InputError("file:line", ...).
 ToolPathFile readToolPathFile(const std::string& path, const PathFileOptions& options = {});
+
+// Reads `path` as readToolPathFile does, handing its moves to `takePart` in order, at most
+// `partMoves` at a time (ToolPathFile::takePart), without holding them all: a file read
+// once whole to check it is re-read this way a band at a time (tools/run/
+// tiled_simulation.h). Returns the file as read, every move handed over (movesHandedOver).
+ToolPathFile streamToolPathFile(const std::string& path, const PathFileOptions& options,
+                                size_t partMoves, const std::function<void(ToolPath&)>& takePart);
 
 // The plain CL text reader on a stream or a string (`source` names it in messages).
 void readClText(std::istream& in, const std::string& source, ToolPathFile& out,

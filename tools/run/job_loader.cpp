@@ -20,7 +20,8 @@ namespace {
 // The tool path of a job with "path": {"file": ...}, and the cutter from its CUTTER/
 // when the job has no "tool".
 void readPathFile(Job& job) {
-  ToolPathFile read = readToolPathFile(job.pathFile, job.pathOptions());
+  job.pathReadOptions = job.pathOptions();
+  ToolPathFile read = readToolPathFile(job.pathFile, job.pathReadOptions);
   const bool multiTool = !read.path.cutters.empty();
   if (!job.hasTool && job.tools.empty() && !read.cutter)
     throw InputError("tool",
@@ -188,6 +189,28 @@ void loadJobInputs(Job& job, bool checkMemory) {
   } catch (const InputError& e) {
     throwFromJob(e, job.source);
   }
+}
+
+bool pathStreams(const Job& job) {
+  return !job.isRaster && !job.pathFile.empty() && !job.frame;
+}
+
+size_t streamJobPath(const Job& job, size_t partMoves,
+                     const std::function<void(ToolPath&)>& takePart) {
+  // readPathFile: without cutters of the file's own, every move cuts with the job's tool.
+  const bool oneTool = job.path.cutters.empty();
+  const ToolPathFile read =
+      streamToolPathFile(job.pathFile, job.pathReadOptions, partMoves, [&](ToolPath& part) {
+        if (oneTool)
+          for (Move& m : part.moves) m.tool = 0;
+        takePart(part);
+      });
+  return read.movesHandedOver;
+}
+
+void releasePathMoves(Job& job) {
+  std::vector<Move>().swap(job.path.moves);
+  std::vector<int64_t>().swap(job.moveLines);
 }
 
 Job loadJob(const std::string& text, const std::string& source, bool checkMemory,

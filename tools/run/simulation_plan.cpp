@@ -10,6 +10,7 @@
 #include "base/input_error.h"
 #include "raycast/simulation.h"
 #include "tools/io/job.h"
+#include "tools/run/job_loader.h"
 #include "tools/run/simulation_run.h"
 
 namespace scallop {
@@ -36,7 +37,7 @@ std::string bannerOf(const Job& job, const SimulationPlan& plan) {
   const GridSpec& g = plan.grid;
   std::string line = fmt::format(
       "{}: {} cutter R={:g} mm, {} cutting moves, {} x {} cells of {:g} mm", job.source,
-      toString(job.cutter.type), job.cutter.radius, job.path.cuttingMoves(), g.nx, g.ny, g.spacing);
+      toString(job.cutter.type), job.cutter.radius, plan.cuttingMoves, g.nx, g.ny, g.spacing);
   if (plan.inBands)
     return line + fmt::format(", bands {}..{} of {} ({} rows each)", plan.firstBand,
                               plan.endBand - 1, plan.layout.bands, plan.layout.bandRows);
@@ -91,6 +92,11 @@ SimulationPlan planSimulation(const Job& job, const RunSettings& settings, doubl
   // A path whose whole scene does not fit runs in bands, each with the scene of the moves
   // that reach it (tiled_simulation.h).
   plan.sceneBands = plan.exact && !plan.memory.wholeSceneFits();
+  plan.pathMoves = job.path.moves.size();
+  plan.cuttingMoves = job.path.cuttingMoves();
+  plan.streamPath = plan.sceneBands && pathStreams(job);
+  if (plan.streamPath)
+    plan.cellsPerMove = programCellsPerMove(job.cutter, job.path, job.stock, plan.grid.spacing);
   // The stamp baseline holds the whole map (its bands are refused by the run).
   plan.inBands = plan.bandsAsked || plan.sceneBands || (plan.exact && !plan.memory.mapFits());
   if (plan.inBands) {

@@ -46,11 +46,19 @@ struct SimulationPlan {
   // The whole path's scene does not fit: each band builds the scene of the moves that
   // reach it (memory.largestBandBytes), bands halved until the largest one fits.
   bool sceneBands = false;
-  BandLayout layout;      // the bands (of settings.tileRows rows) when inBands
-  int64_t firstBand = 0;  // bands [firstBand, endBand) run here; --bands K:M
-  int64_t endBand = 0;    // narrows them and writes band files instead of outputs
-  bool partial = false;   // --bands K:M
-  std::string banner;     // the run's first line on stderr, without "scallop: "
+  // A scene a band of a path file (pathStreams in job_loader.h): each band re-reads the
+  // file as a stream and sweeps it through its window, and the run frees the path's moves
+  // once it has planned (releasePathMoves): none is resident beside a band's scene.
+  bool streamPath = false;
+  size_t pathMoves = 0;                      // the path's moves: what each re-read must count
+  size_t cuttingMoves = 0;                   // its cutting moves
+  double cellsPerMove = 0;                   // streamPath: programCellsPerMove of the whole path
+  size_t streamPartMoves = size_t(1) << 16;  // moves a part of the stream holds
+  BandLayout layout;                         // the bands (of settings.tileRows rows) when inBands
+  int64_t firstBand = 0;                     // bands [firstBand, endBand) run here; --bands K:M
+  int64_t endBand = 0;   // narrows them and writes band files instead of outputs
+  bool partial = false;  // --bands K:M
+  std::string banner;    // the run's first line on stderr, without "scallop: "
 
   int64_t cellsToCompute() const;
 };

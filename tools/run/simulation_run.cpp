@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "base/input_error.h"
 #include "raycast/simulation.h"
@@ -159,7 +160,7 @@ std::string previewTitle(const std::string& simulationTitle) {
   return simulationTitle.substr(0, n - upper.size()) + " mm";
 }
 
-RunOutcome runSimulation(const Job& job, const RunSettings& settings) {
+RunOutcome runSimulation(Job job, const RunSettings& settings) {
   const auto tStart = Clock::now();
   const bool exact = settings.method == "exact";
   const bool banded = settings.tiled || settings.tileRows > 0 || !settings.bands.empty();
@@ -181,7 +182,7 @@ RunOutcome runSimulation(const Job& job, const RunSettings& settings) {
                              "use a larger grid.spacing");
     requireBandsFitDisk(job, plan, settings.outDir);
   }
-  if (plan.inBands) return runTiledSimulation(job, plan, settings);
+  if (plan.inBands) return runTiledSimulation(std::move(job), plan, settings);
   return {RunOutcome::Kind::kInMemory, runInMemory(job, plan, settings, tStart)};
 }
 

@@ -40,10 +40,11 @@ struct RunOutcome {
   nlohmann::json document;
 };
 
-// Runs `job` as `settings` ask. Throws InputError for a run that cannot be done (the
+// Runs `job` (the run's own: a run in bands may free its moves, runTiledSimulation) as
+// `settings` ask. Throws InputError for a run that cannot be done (the
 // design comparison in bands, a map or scene larger than memory and disk allow, an
 // output folder that cannot be written).
-RunOutcome runSimulation(const Job& job, const RunSettings& settings);
+RunOutcome runSimulation(Job job, const RunSettings& settings);
 
 // The heights of a run held in memory, and its report.json document.
 struct ComputedSimulation {

@@ -23,6 +23,7 @@
 #include "tools/render/preview_png.h"
 #include "tools/run/band_files.h"
 #include "tools/run/feed_mark_report.h"
+#include "tools/run/job_loader.h"
 #include "tools/run/memory_limits.h"
 #include "tools/run/path_report.h"
 #include "tools/run/report.h"
@@ -46,6 +47,26 @@ std::string fileMd5(const std::string& path) {
   while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0)
     md5.update(chunk.data(), size_t(in.gcount()));
   return md5.hexDigest();
+}
+
+// The scene of the moves that may reach `window`, swept from the path file re-read as a
+// stream: the entries buildScene makes of the whole path with that window, bit for bit
+// (ToolPathSweeper), with the whole program's culling tiles (plan.cellsPerMove).
+std::unique_ptr<SweptScene> streamedBandScene(const Job& job, const SimulationPlan& plan,
+                                              const SimulationOptions& options,
+                                              const SweepWindow& window) {
+  ToolPathSweeper sweeper(
+      job.path.cutters.empty() ? std::vector<Cutter>{job.cutter} : job.path.cutters,
+      options.cutting, &window, plan.cuttingMoves);
+  const size_t moves =
+      streamJobPath(job, plan.streamPartMoves, [&](const ToolPath& part) { sweeper.add(part); });
+  if (moves != plan.pathMoves)
+    throw InputError(job.pathFile,
+                     fmt::format("changed while it was being simulated: {} moves read again, {} "
+                                 "the first time; run the job again",
+                                 moves, plan.pathMoves));
+  return buildSceneOfMoves(sweeper.finish(), job.stock, plan.grid.spacing, plan.cellsPerMove,
+                           options);
 }
 
 }  // namespace
@@ -83,8 +104,7 @@ void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::
                  (long long)plan.layout.bandRows);
 }
 
-RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
-                              const RunSettings& settings) {
+RunOutcome runTiledSimulation(Job job, const SimulationPlan& plan, const RunSettings& settings) {
   const auto tStart = Clock::now();
   const GridSpec& grid = plan.grid;
   const BandLayout& layout = plan.layout;
@@ -129,7 +149,7 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
            {"band_rows", layout.bandRows},
            {"bands", layout.bands},
            {"exr_tile_rows", layout.tileHeight},
-           {"cutting_moves", job.path.cuttingMoves()}};
+           {"cutting_moves", plan.cuttingMoves}};
     // Per-band scenes differ from band to band: their sizes go with each band's stats.
     if (plan.sceneBands)
       run["scene_bands"] = true;
@@ -143,7 +163,7 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
     whole.record.jobSource = job.source;
     whole.record.inputs = jobToJson(job);
     whole.record.grid = grid;
-    whole.record.cuttingMoves = int64_t(job.path.cuttingMoves());
+    whole.record.cuttingMoves = int64_t(plan.cuttingMoves);
     whole.record.sweptSegments = int64_t(sceneStats.segments);
     whole.record.cullingTiles = int64_t(sceneStats.tiles);
     whole.record.tiled = {{"bands", layout.bands},
@@ -158,6 +178,10 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
     if (!job.isRaster) output->setPathFile(pathFileReport(job, settings.quiet));
   }
 
+  // Everything above that reads the moves is made: from here a streamed path is re-read
+  // from its file, a band at a time.
+  if (plan.streamPath) releasePathMoves(job);
+
   std::vector<std::string> written;
   const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   for (int64_t b = first; b < end; ++b) {
@@ -166,7 +190,9 @@ RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
     if (plan.sceneBands) {
       scene.reset();  // the last band's scene goes before this band's is built
       const SweepWindow window = cellWindow(band.grid());
-      scene = buildScene(job.cutter, job.path, job.stock, grid.spacing, options, &window);
+      scene = plan.streamPath
+                  ? streamedBandScene(job, plan, options, window)
+                  : buildScene(job.cutter, job.path, job.stock, grid.spacing, options, &window);
       options.cast.progress(0, 0);
       bandScene = scene->stats();
     }

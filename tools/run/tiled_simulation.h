@@ -39,9 +39,10 @@ struct Job;
 void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::string& outDir);
 
 // A simulation run in bands: all of them into the usual outputs, or with
-// settings.bands = "K:M" only bands K..M-1 into band files.
-RunOutcome runTiledSimulation(const Job& job, const SimulationPlan& plan,
-                              const RunSettings& settings);
+// settings.bands = "K:M" only bands K..M-1 into band files. The job is the run's own:
+// with plan.streamPath its moves are freed once the outputs' descriptions are made, and
+// each band re-reads the path file.
+RunOutcome runTiledSimulation(Job job, const SimulationPlan& plan, const RunSettings& settings);
 
 // What TiledOutput needs of a run besides its bands: made from the plan by the run
 // itself, or by merge from the "run" description that band files carry.
