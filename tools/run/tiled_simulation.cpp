@@ -92,10 +92,11 @@ void requireBandsFitDisk(const Job& job, const SimulationPlan& plan, const std::
     std::fprintf(stderr,
                  "scallop: the culling scene of %zu cutting moves (%.1f GiB) does not fit in "
                  "memory; computing the map in %lld bands of %lld rows, each with the scene of "
-                 "the moves that reach it (at most %.1f GiB a band)\n",
+                 "the moves that reach it (at most %.1f GiB a band)%s\n",
                  plan.memory.cuttingMoves, plan.memory.sceneBytes / kGiB,
                  (long long)plan.layout.bands, (long long)plan.layout.bandRows,
-                 plan.memory.largestBandBytes / kGiB);
+                 plan.memory.largestBandBytes / kGiB,
+                 plan.streamPath ? ", reading the path file again for each band" : "");
   else
     std::fprintf(stderr,
                  "scallop: the %lld x %lld map does not fit in memory; computing it in %lld "

@@ -4,7 +4,8 @@
 // the largest y) so that rows reach the writers in file order. One culling scene of
 // the whole path serves every band, or, when that scene does not fit in memory
 // (SimulationPlan::sceneBands), each band builds the scene of the moves that reach it
-// (sweepToolPath's window: the same moves, so the same heights); each band is a ZMap over
+// (sweepToolPath's window: the same moves, so the same heights), a path file then read
+// again for each band rather than held (SimulationPlan::streamPath); each band is a ZMap over
 // grid.rows(j0, j1), whose cell centres are the full grid's to the bit, so a tiled map equals the
 // in-memory one. Memory: the scene (or a band's), one band (<= 256 MB of doubles by default) and
 // its float copy.
