@@ -71,9 +71,11 @@ SectionSide PassSection::side(double h, int sign) const {
       phiB = mid, qb = q;
     }
   }
-  // phi_a never left 0: the crossing, if any, is within round-off of the vertical
-  // flank, which then starts below zh.
-  out.reachable = phiA > 0;
+  // phi_a never left 0 and no dual bound came below the flank: the crossing, if any, is
+  // within round-off of the vertical flank, which then starts below zh. (A support
+  // direction can close the bracket at once: a 90-degree V-bit's face is normal to the
+  // first bisection's direction, pi/4, whose bound is then exact, phi_a still 0.)
+  out.reachable = phiA > 0 || high < reach - tolerance_;
   out.offset = out.reachable ? Enclosure{low, std::max(low, high)} : Enclosure{reach, reach};
   return out;
 }
