@@ -319,7 +319,8 @@ Job parseJob(const std::string& textIn, const std::string& source,
     if (doc.contains("design")) {
       const json& design = requireObject(doc, "design", "design");
       rejectUnknownKeys(
-          design, {"stl", "gouge_tolerance", "normal_deviation", "gouge_depth", "scallop_limit"},
+          design,
+          {"stl", "gouge_tolerance", "normal_deviation", "gouge_depth", "scallop_limit", "view"},
           "design");
       job.designFile = besideJob(text(design, "stl", "design.stl"));
       job.gougeTolerance =
@@ -337,6 +338,20 @@ Job parseJob(const std::string& textIn, const std::string& source,
                            "must be > 0 mm (the deviation above which material left counts)");
         if (!job.normalDeviation)
           throw InputError("design.scallop_limit", "goes with \"normal_deviation\": true");
+      }
+      if (design.contains("view")) {
+        const json& view = requireObject(design, "view", "design.view");
+        rejectUnknownKeys(view, {"azimuth_deg", "elevation_deg"}, "design.view");
+        job.viewAzimuthDeg =
+            number(view, "azimuth_deg", "design.view.azimuth_deg", &job.viewAzimuthDeg);
+        job.viewElevationDeg =
+            number(view, "elevation_deg", "design.view.elevation_deg", &job.viewElevationDeg);
+        if (!(std::fabs(job.viewAzimuthDeg) <= 360))
+          throw InputError("design.view.azimuth_deg", "must be within [-360, 360] degrees");
+        if (!(std::fabs(job.viewElevationDeg) <= 90))
+          throw InputError("design.view.elevation_deg", "must be within [-90, 90] degrees");
+        if (!job.normalDeviation)
+          throw InputError("design.view", "goes with \"normal_deviation\": true");
       }
     }
 
@@ -462,6 +477,9 @@ json jobToJson(const Job& job) {
     if (job.normalDeviation)
       out["design"].update({{"normal_deviation", true}, {"gouge_depth", job.gougeDepth}});
     if (!std::isnan(job.scallopLimit)) out["design"]["scallop_limit"] = job.scallopLimit;
+    if (job.normalDeviation)
+      out["design"]["view"] = {{"azimuth_deg", job.viewAzimuthDeg},
+                               {"elevation_deg", job.viewElevationDeg}};
   }
   json offsets = json::object();
   for (int k = 0; k < 6; ++k) {

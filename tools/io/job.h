@@ -85,6 +85,8 @@ struct Job {
   bool normalDeviation = false;
   double gougeDepth = 1;
   double scallopLimit = NAN;  // mm: design.scallop_limit (NaN: none)
+  // design.view: the angles deviation_view.png is drawn from (tools/render/deviation_view_png.h).
+  double viewAzimuthDeg = 30, viewElevationDeg = 35;
 
   GridSpec grid() const;
   // The stock's highest point on the map's lines: stock.max.z, or in a frame the box's

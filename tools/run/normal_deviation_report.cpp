@@ -13,6 +13,7 @@
 #include "analysis/normal_deviation.h"
 #include "tools/io/job.h"
 #include "tools/io/ply_writer.h"
+#include "tools/render/deviation_view_png.h"
 
 namespace scallop {
 
@@ -108,6 +109,13 @@ nlohmann::json normalDeviationReport(const Job& job, const std::string& outDir, 
          "positive = material left; NaN = no material or unresolved"},
         (std::filesystem::path(outDir) / "deviation.ply").string());
     r["mesh"] = "deviation.ply";
+    DeviationView view;
+    view.azimuthDeg = job.viewAzimuthDeg, view.elevationDeg = job.viewElevationDeg;
+    writeDeviationViewPng(
+        *job.design, d.deviation, view,
+        (std::filesystem::path(outDir) / "deviation_view.png").string(),
+        "normal deviation of " + std::filesystem::path(job.designFile).filename().string());
+    r["picture"] = "deviation_view.png";
   }
   if (!quiet) {
     std::fprintf(stderr, "design: normal deviation at %zu vertices", job.design->vertices.size());

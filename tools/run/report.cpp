@@ -103,7 +103,7 @@ json simulationReport(const RunRecord& run) {
   if (!run.pathFile.is_null()) r["path_file"] = run.pathFile;
   if (!run.design.is_null()) r["design"] = run.design, r["outputs"].push_back("deviation.png");
   if (run.design.contains("normal_deviation") && run.design["normal_deviation"].contains("mesh"))
-    r["outputs"].push_back("deviation.ply");
+    r["outputs"].push_back("deviation.ply"), r["outputs"].push_back("deviation_view.png");
   return r;
 }
 

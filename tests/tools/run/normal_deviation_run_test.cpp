@@ -95,6 +95,10 @@ TEST_F(NormalDeviationRun, ThePlyHoldsTheZMapLessThePlaneAndTheReportItsStatisti
   EXPECT_EQ(nd.at("unresolved_vertices"), 0);
   EXPECT_EQ(nd.at("histogram").at("counts").size(), 20u);
   EXPECT_NE(report.at("outputs").dump().find("deviation.ply"), std::string::npos);
+  // The picture of the coloured design (tools/render/deviation_view_png.h).
+  EXPECT_TRUE(fs::is_regular_file(path("out/deviation_view.png")));
+  EXPECT_EQ(nd.at("picture"), "deviation_view.png");
+  EXPECT_NE(report.at("outputs").dump().find("deviation_view.png"), std::string::npos);
 }
 
 // The design 0.05 mm above the floor the raster cut (z = -0.25): the report's areas are
@@ -144,13 +148,20 @@ TEST_F(NormalDeviationRun, BadDesignsAndKeysAreErrorsWithNothingWritten) {
   EXPECT_NE(r.err.find("facet "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("wound the other way"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("out/deviation.ply")));
+  EXPECT_FALSE(fs::exists(path("out/deviation_view.png")));
   EXPECT_FALSE(fs::exists(path("out/report.json")));
 
   for (const auto& [bad, field] :
        {std::pair{R"("gouge_depth": 0)", "design.gouge_depth"},
         std::pair{R"("normal_deviation": true, "scallop_limit": -1)", "design.scallop_limit"},
         std::pair{R"("scallop_limit": 0.01)", "design.scallop_limit"},
-        std::pair{R"("normal_deviation": "yes", "gouge_depth": 1)", "design.normal_deviation"}}) {
+        std::pair{R"("normal_deviation": "yes", "gouge_depth": 1)", "design.normal_deviation"},
+        std::pair{R"("normal_deviation": true, "view": {"elevation_deg": 95})",
+                  "design.view.elevation_deg"},
+        std::pair{R"("normal_deviation": true, "view": {"azimuth_deg": "north"})",
+                  "design.view.azimuth_deg"},
+        std::pair{R"("normal_deviation": true, "view": {"tilt_deg": 3})", "design.view"},
+        std::pair{R"("view": {"azimuth_deg": 10})", "design.view"}}) {
     std::string job = kJob;
     job.replace(job.find(R"("normal_deviation": true, "gouge_depth": 1)"),
                 std::strlen(R"("normal_deviation": true, "gouge_depth": 1)"), bad);
