@@ -142,7 +142,10 @@ void SweptScene::gatherCandidates(double x0, double y0, double x1, double y1, do
     candidates.emplace_back();
     candidates.back().tile = id, candidates.back().segment = segment;
     candidates.back().teeth = seg.teeth() != nullptr;
-    if (seg.turning()) candidates.back().tip = tipPlaneBound(seg.curve(), x0, y0, x1, y1);
+    // A constant-axis kernel's tip plane is its lowest tip's: no tighter than its tile's
+    // planes (B7: its tip ball, 1 % more instructions a cell with it).
+    if (seg.turning() && !seg.takesSectionMemo())
+      candidates.back().tip = tipPlaneBound(seg.curve(), x0, y0, x1, y1);
   }
 }
 
@@ -208,8 +211,8 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
   // does not depend on the order, the block or the hint.
   thread_local std::vector<std::pair<double, uint32_t>> order;
   order.clear();
-  // winnerT: the pose parameter of the best's contact; NaN for a constant-axis best, whose
-  // LowestPoint carries none (so no rule below fires for it).
+  // winnerT: the pose parameter of the best's contact; NaN for a constant-axis kernel's
+  // best (a tip ball's too), whose LowestPoint carries none (so no rule below fires for it).
   double best = ceiling, winnerT = NAN;
   uint32_t winner = UINT32_MAX;
   auto evaluate = [&](uint32_t k, double cutoff) {
@@ -232,7 +235,8 @@ double SweptScene::lowestHeightAmong(const std::vector<Candidate>& candidates,
         cutoff = hintCutoff(move, cutoff);
     }
     const LowestPoint lp = move.lowestPoint(x, y, memo, cutoff, anchor);
-    if (lp.hit && lp.z < best) best = lp.z, winner = k, winnerT = move.turning() ? lp.t : NAN;
+    if (lp.hit && lp.z < best)
+      best = lp.z, winner = k, winnerT = move.takesSectionMemo() ? NAN : lp.t;
   };
   // The candidate's own plane (from the region's centre) is usually the tightest and
   // alone often prunes it; a turning move's tip-plane bound (tip_plane_bound.h) is

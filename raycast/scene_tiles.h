@@ -115,16 +115,18 @@ LowestPoint closedFormPlaneHint(const SweptMove& seg, double x, double y);
 // The cutoff to evaluate a guessed winner with (a neighbour's). A turning move's search
 // first tries to prove the move stays above its cutoff (ray clearance, swept_move.cpp
 // step 4a), which a winner always fails: a guess, right 95 % of the time on B3, skips
-// it. Heights do not depend on the cutoff, only whether a loser costs more.
+// it. A constant-axis kernel (SweptMove::takesSectionMemo: a tip ball's too) prunes by
+// its cutoff in closed form, so it keeps it. Heights do not depend on the cutoff, only
+// whether a loser costs more.
 inline double hintCutoff(const SweptMove& seg, double best) {
-  return seg.turning() && !seg.teeth() ? HUGE_VAL : best;
+  return seg.turning() && !seg.teeth() && !seg.takesSectionMemo() ? HUGE_VAL : best;
 }
 
-// The section memo of a constant-axis move for the cell's row (null without a cache, and
-// for a turning move, which keeps none: no hash for it).
+// The section memo of a constant-axis kernel (SweptMove::takesSectionMemo) for the cell's
+// row (null without a cache, and for a turning move, which keeps none: no hash for it).
 inline SectionMemo* memoOf(SweptScene::QueryCache* cache, const SweptMove& move, uint32_t segment,
                            double y) {
-  return cache && !move.turning() ? cache->memoFor(segment, y) : nullptr;
+  return cache && move.takesSectionMemo() ? cache->memoFor(segment, y) : nullptr;
 }
 
 // Plane values are exact up to double round-off; this margin (mm) absorbs it. (Steep

@@ -64,9 +64,9 @@ constexpr double kHalvesTurn = 0.05;
 // Contact normals flatter than this (|n.z|) give the rest's plane too steep a slope to
 // settle anything: the general path decides there.
 constexpr double kTipBallMinNormalZ = 0.05;
-// Section memos of tip balls on a constant axis, per thread (the scene keeps memos for
-// constant-axis moves only; a general cutter's move is not one). A memo is used only
-// for its own segment and section, so heights do not depend on which slot a move takes.
+// Section memos of tip balls on a constant axis, per thread, for callers that give none
+// (the scene gives its own: takesSectionMemo). A memo is used only for its own segment
+// and section, so heights do not depend on which slot a move takes.
 constexpr int kTipBallMemos = 8;
 }  // namespace
 
@@ -82,11 +82,12 @@ void SweptMove::makeTipBall() {
       TipBallMove{SweptMove(tipBallCutter(ball), curve_), SweptRest(cutter_, ball, curve_)});
 }
 
-LowestPoint SweptMove::tipBallLowestPoint(double x, double y, double cutoff,
+LowestPoint SweptMove::tipBallLowestPoint(double x, double y, SectionMemo* memo, double cutoff,
                                           double cutoffAnchor) const {
   const SweptMove& ball = tipBall_->move;
-  SectionMemo* memo = nullptr;
-  if (!ball.turning()) {
+  if (ball.turning()) {
+    memo = nullptr;
+  } else if (!memo) {
     thread_local SectionMemo memos[kTipBallMemos];
     memo = &memos[(reinterpret_cast<uintptr_t>(this) / sizeof(SweptMove)) % kTipBallMemos];
   }
@@ -196,7 +197,7 @@ __attribute__((always_inline)) inline LowestPoint SweptMove::envelopeOf(double x
                                                                         double cutoff,
                                                                         double cutoffAnchor) const {
   if (segment_) return segment_->lowestPoint(x, y, memo, cutoff);
-  return turningLowestPoint(x, y, cutoff, cutoffAnchor);
+  return turningLowestPoint(x, y, memo, cutoff, cutoffAnchor);
 }
 
 LowestPoint SweptMove::envelopeLowestPoint(double x, double y, SectionMemo* memo, double cutoff,
@@ -218,13 +219,13 @@ LowestPoint SweptMove::lowestPoint(double x, double y, SectionMemo* memo, double
   return teeth_->lowestCrossing(x, y, envelope, cutoff);
 }
 
-LowestPoint SweptMove::turningLowestPoint(double x, double y, double cutoff,
+LowestPoint SweptMove::turningLowestPoint(double x, double y, SectionMemo* memo, double cutoff,
                                           double cutoffAnchor) const {
   const Cutter& c = cutter_;
   // A general cutter with a ball tip: the hemisphere's height where the rest of the
   // cutter provably stays above it (tip_ball.h), a miss where both stay above the cutoff.
   if (tipBall_) {
-    const LowestPoint ball = tipBallLowestPoint(x, y, cutoff, cutoffAnchor);
+    const LowestPoint ball = tipBallLowestPoint(x, y, memo, cutoff, cutoffAnchor);
     const SweptRest& rest = tipBall_->rest;
     if (ball.hit) {
       // The rest's floor over the whole move first (one comparison: on CAM paths the

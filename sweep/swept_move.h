@@ -43,7 +43,7 @@ class SweptMove {
 
   // The lowest point of the swept solid on the vertical line through (x, y) (with teeth:
   // the lowest point an edge passes through, ToothSweep::lowestCrossing). `memo`
-  // serves constant-axis moves (SweptSegment::lowestPoint). A height at or above
+  // serves the moves that takesSectionMemo() (SweptSegment::lowestPoint). A height at or above
   // `cutoff` may be reported as a miss; the height returned otherwise does not depend
   // on `cutoff`, `memo` or `cutoffAnchor`: the t in [0, 1] a turning move first tries
   // to prove it stays above the cutoff from (swept_move.cpp step 4a; NaN: the knots').
@@ -83,6 +83,14 @@ class SweptMove {
   const Vec3& start() const { return curve_.tipStart(); }  // tip at t = 0
   const Vec3& end() const { return curve_.tipEnd(); }      // tip at t = 1
   bool turning() const { return !segment_; }
+  // True where lowestPoint() runs a constant-axis kernel, which a SectionMemo serves and
+  // a cutoff prunes in closed form: the move's SweptSegment, or a general cutter's tip
+  // ball (tip_ball.h) on a constant axis and a linear tip, whose hemisphere's sweep is a
+  // SweptSegment. The scene then keeps its memos and its neighbours' cutoffs as for a
+  // constant-axis move (scene_tiles.h), though the move is turning() (no segment).
+  bool takesSectionMemo() const {
+    return segment_ || (tipBall_ && curve_.constantAxis() && curve_.linearTip());
+  }
   // The spacing (mm) of the knots a turning move starts its contact search from
   // (contact_knots.h; default kContactKnotSpacing; 0: none, start from the middle).
   // Heights differ only within the proof gap from one spacing to another, but are a
@@ -106,7 +114,8 @@ class SweptMove {
   static unsigned long long unprovenSearches();
 
  private:
-  LowestPoint turningLowestPoint(double x, double y, double cutoff, double cutoffAnchor) const;
+  LowestPoint turningLowestPoint(double x, double y, SectionMemo* memo, double cutoff,
+                                 double cutoffAnchor) const;
   // envelopeLowestPoint's body, forced inline into lowestPoint (swept_move.cpp).
   LowestPoint envelopeOf(double x, double y, SectionMemo* memo, double cutoff,
                          double cutoffAnchor) const;
@@ -114,7 +123,8 @@ class SweptMove {
   // sweep, and the lowest the rest of the cutter can reach over the move, mm.
   struct TipBallMove;
   void makeTipBall();
-  LowestPoint tipBallLowestPoint(double x, double y, double cutoff, double cutoffAnchor) const;
+  LowestPoint tipBallLowestPoint(double x, double y, SectionMemo* memo, double cutoff,
+                                 double cutoffAnchor) const;
 
   Cutter cutter_;
   PoseCurve curve_;

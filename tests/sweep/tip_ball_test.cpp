@@ -106,5 +106,51 @@ TEST(TipBall, HeightsAgreeWithCertifiedSearch) {
   EXPECT_GT(fast * 4, hits);  // random lines: many lie up the flank, where it falls back
 }
 
+// The scene's constant-axis treatment (SweptMove::takesSectionMemo): a tip ball on a
+// constant axis takes a section memo and a cutoff, and neither changes a height: along a
+// row of lines, one memo shared by every line and the cutoff of the lowest so far give
+// the same bits as no memo and no cutoff (a miss only where the height is at or above
+// the cutoff). A turning move, and a cutter without a ball tip, take none.
+TEST(TipBall, ConstantAxisTakesSectionMemoAndKeepsHeights) {
+  const Cutter c = taperBall(1, 5);
+  const Vec3 axis{0, 0, 1};
+  const SweptMove move(c, PoseCurve::linear({{0, 0, 0}, axis}, {{4, 0.5, -0.2}, axis}));
+  ASSERT_TRUE(move.turning());  // a general cutter: no SweptSegment of its own
+  EXPECT_TRUE(move.takesSectionMemo());
+  const Vec3 tilted = normalize(Vec3{0.3, 0, 1});
+  EXPECT_FALSE(
+      SweptMove(c, PoseCurve::linear({{0, 0, 0}, axis}, {{4, 0, 0}, tilted})).takesSectionMemo());
+  TaperBullShape bull;
+  bull.tipDiameter = 4, bull.cornerRadius = 0.5, bull.taperDeg = 5, bull.fluteLength = 10;
+  const Cutter noBall = cutterOfChain(CutterType::TaperBull, taperBullChain(bull, "t"), "t");
+  EXPECT_FALSE(SweptMove(noBall, PoseCurve::linear({{0, 0, 0}, axis}, {{4, 0, 0}, axis}))
+                   .takesSectionMemo());
+  EXPECT_TRUE(SweptMove(Cutter::make(CutterType::Ball, 1),
+                        PoseCurve::linear({{0, 0, 0}, axis}, {{4, 0, 0}, axis}))
+                  .takesSectionMemo());
+
+  int hits = 0, memoUses = 0;
+  for (double y = -1.2; y <= 1.7; y += 0.37) {
+    SectionMemo memo;
+    double lowest = HUGE_VAL;
+    for (double x = -1.3; x <= 5.3; x += 0.29) {
+      const LowestPoint plain = move.lowestPoint(x, y);
+      const LowestPoint memoised = move.lowestPoint(x, y, &memo, lowest);
+      memoUses += memo.owner != nullptr;
+      if (plain.hit && plain.z < lowest) {
+        ++hits;
+        ASSERT_TRUE(memoised.hit) << x << " " << y;
+        EXPECT_EQ(memoised.z, plain.z) << x << " " << y;
+        EXPECT_EQ(memoised.normal.z, plain.normal.z) << x << " " << y;
+        lowest = plain.z;
+      } else {
+        EXPECT_TRUE(!memoised.hit || memoised.z == plain.z) << x << " " << y;
+      }
+    }
+  }
+  EXPECT_GT(hits, 20);
+  EXPECT_GT(memoUses, 100);  // the memo given was the one the ball's segment used
+}
+
 }  // namespace
 }  // namespace scallop
