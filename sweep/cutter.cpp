@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -164,6 +165,59 @@ void Cutter::edgeSpanRadii(const EdgeSpan& span, double* lo, double* hi) const {
   // The radius is non-decreasing along a ball, flat or bull profile.
   *lo = profileRadiusAt(bottomRadius(), cornerRadius, span.from);
   *hi = profileRadiusAt(bottomRadius(), cornerRadius, span.to);
+}
+
+void Cutter::edgeSpot(double u, double* rho, double* h) const {
+  u = std::clamp(u, 0.0, edgeLength());
+  if (general()) {
+    const ProfilePoint p = profile->pointAt(u);
+    *rho = p.rho, *h = p.s;
+    return;
+  }
+  const double rb = bottomRadius(), r = cornerRadius;
+  *rho = profileRadiusAt(rb, r, u);
+  if (u <= rb)
+    *h = 0;
+  else if (u < rb + r * kPi / 2)
+    *h = r * (1 - std::cos((u - rb) / r));
+  else
+    *h = r + (u - rb - r * kPi / 2);
+}
+
+RakeLag Cutter::rakeLag(int k) const {
+  const ToothRake rake = teeth.toothRake(k);
+  if (rake.zero()) return {};
+  const double from = teeth.edgeSpans.empty() ? 0 : teeth.edgeSpans[size_t(k)].from;
+  double rho0, h0;
+  edgeSpot(from, &rho0, &h0);
+  return RakeLag(rake, rho0, h0);
+}
+
+void Cutter::checkRakes(const std::string& field) const {
+  constexpr int kSamples = 4096;
+  const double limit = std::sin(kPi / 3);
+  for (int k = 0; k < teeth.flutes && !teeth.toothRakes.empty(); ++k) {
+    const RakeLag lag = rakeLag(k);
+    if (!lag.active()) continue;
+    const EdgeSpan span =
+        teeth.edgeSpans.empty() ? EdgeSpan{0, edgeLength()} : teeth.edgeSpans[size_t(k)];
+    for (int i = 0; i <= kSamples; ++i) {
+      double rho, h;
+      edgeSpot(span.from + (span.to - span.from) * i / kSamples, &rho, &h);
+      const double d = lag.offset(h);
+      if (std::abs(d) <= limit * rho || (rho == 0 && d == 0)) continue;
+      char where[160];
+      std::snprintf(where, sizeof where,
+                    "tooth %d's rake face leaves the cutter's surface at height %.6g mm "
+                    "(radius %.6g mm): ",
+                    k, h, rho);
+      throw InputError(field, std::string(where) +
+                                  "the face through the edge's start must meet every point of "
+                                  "its span within 60 degrees of the radial line; give the "
+                                  "edge a span (edge_span) or a smaller rake (a flank's axial "
+                                  "rake is its helix, helix_deg)");
+    }
+  }
 }
 
 Cutter Cutter::spindleEnvelope() const {

@@ -51,6 +51,8 @@ CutterType parseCutterType(const std::string& name, const std::string& field = "
 //     (`tooth_offsets`); runout composes with them.
 //   * Edges on a span of the profile (`edge_span`, `tooth_edge_spans`, EdgeSpan): an
 //     insert covers part of the profile only, the body behind the rest not cutting.
+//   * Rake (`rake_deg`, `tooth_rakes_deg`, ToothRake): the edge lies on a plane turned
+//     out of the meridian, so its point at (rho, h) trails by RakeLag's angle.
 struct CutterTeeth {
   int flutes = 2;
   double helixDeg = 0;                    // beta, degrees, in [0, 60]
@@ -59,11 +61,15 @@ struct CutterTeeth {
   std::vector<double> toothAnglesDeg;     // one per flute; empty: 360 k / flutes
   std::vector<ToothOffset> toothOffsets;  // one per flute; empty: none
   std::vector<EdgeSpan> edgeSpans;        // one per flute; empty: every edge whole
+  std::vector<ToothRake> toothRakes;      // one per flute; empty: none
 
   // Tooth k's body angle psi_k, radians.
   double toothAngle(int k) const;
   ToothOffset toothOffset(int k) const {
     return toothOffsets.empty() ? ToothOffset{} : toothOffsets[size_t(k)];
+  }
+  ToothRake toothRake(int k) const {
+    return toothRakes.empty() ? ToothRake{} : toothRakes[size_t(k)];
   }
   // The largest outward radial offset and the largest axial one towards the tip, mm
   // (0 when no tooth reaches beyond the nominal edge).
@@ -97,6 +103,15 @@ struct Cutter {
   // and largest radius of the profile's points on `span`, mm.
   double edgeArcLength(double h, double rho) const;
   void edgeSpanRadii(const EdgeSpan& span, double* lo, double* hi) const;
+  // The profile's point at arc length u along it: its radius rho and height h, mm.
+  void edgeSpot(double u, double* rho, double* h) const;
+  // Tooth k's rake lag (tooth_geometry.h), its face through the nominal profile's point
+  // at the start of the tooth's span (the tip's axis for a whole edge).
+  RakeLag rakeLag(int k) const;
+  // Validates where the teeth's rake faces meet the profile: every point of each raked
+  // tooth's span (sampled every 1/4096 of it, and its ends) has |D| <= rho sin(60 deg).
+  // Throws InputError naming `field` and the tooth otherwise.
+  void checkRakes(const std::string& field) const;
 
   CutterTeeth teeth;  // read by the "teeth" cutting model only
 

@@ -390,6 +390,17 @@ double CutterProfile::arcLengthAt(double rho, double s) const {
   return at;
 }
 
+ProfilePoint CutterProfile::pointAt(double u) const {
+  double before = 0;
+  for (const ProfileSegment& g : segments_) {
+    const double len = segmentLength(g);
+    if (u <= before + len) return segmentPoint(g, std::max(0.0, u - before));
+    before += len;
+  }
+  const ProfileSegment& last = segments_.back();
+  return {last.rho1, last.s1};
+}
+
 void CutterProfile::radiusRange(double from, double to, double* lo, double* hi) const {
   *lo = HUGE_VAL, *hi = -HUGE_VAL;
   double before = 0;

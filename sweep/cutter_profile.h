@@ -83,6 +83,8 @@ class CutterProfile {
   // gives its own; one on the cap, the chain's end).
   double arcLength() const;
   double arcLengthAt(double rho, double s) const;
+  // The chain's point at arc length u, clamped to [0, arcLength()].
+  ProfilePoint pointAt(double u) const;
   // The smallest and largest distance from the axis of the chain's points whose arc
   // length lies in [from, to], mm (a barrel's chain need not widen all the way up).
   void radiusRange(double from, double to, double* lo, double* hi) const;

@@ -62,7 +62,7 @@ bool continues(const Planned& a, const Cutter& c, const Vec3& bStart, const Vec3
   const CutterTeeth &ta = c.teeth, &tb = cutter.teeth;
   if (ta.flutes != tb.flutes || ta.helixDeg != tb.helixDeg || ta.runout != tb.runout ||
       ta.runoutPhaseDeg != tb.runoutPhaseDeg || ta.toothAnglesDeg != tb.toothAnglesDeg ||
-      ta.edgeSpans != tb.edgeSpans)
+      ta.edgeSpans != tb.edgeSpans || ta.toothRakes != tb.toothRakes)
     return false;
   if (ta.toothOffsets.size() != tb.toothOffsets.size()) return false;
   for (size_t k = 0; k < ta.toothOffsets.size(); ++k)

@@ -65,6 +65,34 @@ void checkToothGeometry(const std::vector<double>& anglesDeg,
   }
 }
 
+RakeLag::RakeLag(const ToothRake& rake, double rho0, double h0) {
+  if (rake.zero()) return;
+  active_ = true;
+  gr_ = rake.radialDeg * kPi / 180;
+  const double ga = rake.axialDeg * kPi / 180;
+  d0_ = -rho0 * std::sin(gr_);
+  slope_ = std::tan(ga) * std::cos(gr_);
+  h0_ = h0;
+}
+
+void checkToothRakes(const std::vector<ToothRake>& rakes, int flutes, const std::string& field,
+                     bool perTooth) {
+  if (rakes.empty()) return;
+  if (perTooth && rakes.size() != size_t(flutes))
+    throw InputError(field, "expected " + std::to_string(flutes) +
+                                " (one per flute) [axial_deg, radial_deg] pairs, got " +
+                                std::to_string(rakes.size()));
+  for (size_t k = 0; k < rakes.size(); ++k) {
+    const ToothRake& r = rakes[k];
+    if (!std::isfinite(r.axialDeg) || !std::isfinite(r.radialDeg) || std::abs(r.axialDeg) > 45 ||
+        std::abs(r.radialDeg) > 45)
+      throw InputError(perTooth ? entry(field, k) : field,
+                       "a rake [axial_deg, radial_deg] has each angle within -45 to 45 degrees, "
+                       "got [" +
+                           mm(r.axialDeg) + ", " + mm(r.radialDeg) + "]");
+  }
+}
+
 double profileArcLength(double bottomRadius, double cornerRadius, double h, double rho) {
   const double rb = bottomRadius, r = cornerRadius;
   // The flat bottom (h = 0 to round-off; on a flat end mill the flank's foot has

@@ -1,9 +1,12 @@
 // Per-tooth geometry of a cutter with teeth (CONVENTIONS.md "Teeth: spindle direction and
 // per-tooth geometry", docs/teeth.md "Per-tooth geometry"): each tooth's body angle
-// (unequal pitch), its radial and axial offset from the nominal edge, and the span of
-// the profile that its edge covers (an insert).
+// (unequal pitch), its radial and axial offset from the nominal edge, the span of the
+// profile that its edge covers (an insert), and the rake that turns its edge out of the
+// meridian plane.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -30,6 +33,58 @@ struct EdgeSpan {
   bool operator!=(const EdgeSpan& o) const { return !(*this == o); }
 };
 
+// Tooth k's rake (tool keys "rake_deg", "tooth_rakes_deg"), degrees. The edge lies on
+// its rake face, a plane through the edge's reference point P0 (the nominal profile's
+// point at the span's start, or at the tip's axis for a whole edge). In the tooth's own
+// frame (radial c, trailing s, axial h; s > 0 behind the radial line in the spindle's
+// turn) that plane is
+//     s = (c - rho0) tan(radial) + (h - h0) tan(axial),
+// the meridian plane s = 0 turned by `radial` about the axis-parallel line through P0 and
+// by `axial` about the radial line through it. Positive axial rake: points above P0
+// trail, as a right-hand helix's do; positive radial rake: points farther out trail.
+struct ToothRake {
+  double axialDeg = 0;   // degrees, in [-45, 45]
+  double radialDeg = 0;  // degrees, in [-45, 45]
+  bool zero() const { return axialDeg == 0 && radialDeg == 0; }
+  bool operator==(const ToothRake& o) const {
+    return axialDeg == o.axialDeg && radialDeg == o.radialDeg;
+  }
+  bool operator!=(const ToothRake& o) const { return !(*this == o); }
+};
+
+// The angle by which a raked edge's point trails the tooth's body angle, radians: the
+// rake face meets the profile's surface of revolution (the edge stays on it, so the
+// spindle envelope does not change) at the point of radius rho and height h whose angle
+// lambda from the radial line solves rho sin(lambda) = (rho cos(lambda) - rho0)
+// tan(gr) + (h - h0) tan(ga), that is
+//     rho sin(lambda - gr) = D(h) = -rho0 sin(gr) + (h - h0) tan(ga) cos(gr),
+//     lambda = gr + asin(D / rho)   (the branch through P0, where lambda = 0).
+// The face meets the circle of radius rho only where |D| <= rho; checkToothRakes keeps
+// every edge point within |D| <= rho sin(60 deg). The argument is clamped to [-1, 1]
+// elsewhere (points off the span, which carry no edge, stay continuous).
+class RakeLag {
+ public:
+  RakeLag() = default;
+  RakeLag(const ToothRake& rake, double rho0, double h0);
+  bool active() const { return active_; }
+  double operator()(double rho, double h) const {
+    if (!active_) return 0;
+    const double d = d0_ + (h - h0_) * slope_;
+    // At the axis (rho -> 0) the face through it (d = 0) is the radial line turned by gr.
+    if (!(rho > 1e-300)) return gr_;
+    return gr_ + std::asin(std::clamp(d / rho, -1.0, 1.0));
+  }
+  // D at height h, mm (for checkToothRakes).
+  double offset(double h) const { return d0_ + (h - h0_) * slope_; }
+
+ private:
+  bool active_ = false;
+  double gr_ = 0;     // the radial rake, rad
+  double d0_ = 0;     // -rho0 sin(gr), mm
+  double slope_ = 0;  // tan(ga) cos(gr)
+  double h0_ = 0;     // mm
+};
+
 // The arc length along a ball, flat or bull profile (flat bottom radius `bottomRadius`,
 // corner radius `cornerRadius`) from the axis to its point at height h above the tip
 // and radius rho from the axis, mm.
@@ -52,5 +107,12 @@ void checkEdgeSpans(const std::vector<EdgeSpan>& spans, int flutes, double edgeL
 void checkToothGeometry(const std::vector<double>& anglesDeg,
                         const std::vector<ToothOffset>& offsets, int flutes, double radius,
                         double bottomRadius, const std::string& fieldPrefix);
+
+// Validates the tool key "rake_deg" (one [axial, radial] pair for every tooth) or
+// "tooth_rakes_deg" (one per flute): each angle finite and within [-45, 45] degrees.
+// (Where the face leaves the profile is checked by Cutter::checkRakes, which knows the
+// profile.) Throws InputError naming `field` and the entry.
+void checkToothRakes(const std::vector<ToothRake>& rakes, int flutes, const std::string& field,
+                     bool perTooth);
 
 }  // namespace scallop

@@ -52,8 +52,9 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
     const EdgeSpan span = !teeth.edgeSpans.empty() ? teeth.edgeSpans[size_t(k)]
                           : spanned                ? EdgeSpan{0, cutter.edgeLength()}
                                                    : EdgeSpan{};
+    const ToothRake rake = teeth.toothRake(k);
     auto same = [&](const ToothGroup& g) {
-      return g.radial == o.radial && g.drop == o.axial && g.span == span;
+      return g.radial == o.radial && g.drop == o.axial && g.span == span && g.rake == rake;
     };
     auto it = std::find_if(groups.begin(), groups.end(), same);
     if (it == groups.end()) {
@@ -67,6 +68,8 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
       g.flutes = n;
       g.spanned = spanned;
       g.span = span;
+      g.rake = rake;
+      g.lag = cutter.rakeLag(k);
       if (spanned) {
         cutter.edgeSpanRadii(span, &g.spanRadiusMin, &g.spanRadiusMax);
         g.spanRadiusMin += o.radial;

@@ -1,7 +1,7 @@
-// The teeth of a cutter grouped by their offsets and edge spans (tooth_geometry.h): teeth
-// with equal offsets lie on one solid of revolution, and the crossing search
-// (tooth_sweep.cpp) runs once a group, on that solid, for the F values of the group's
-// teeth, keeping the points of the solid that lie on the group's span.
+// The teeth of a cutter grouped by their offsets, edge spans and rakes
+// (tooth_geometry.h): teeth with equal offsets lie on one solid of revolution, and the
+// crossing search (tooth_sweep.cpp) runs once a group, on that solid, for the F values
+// of the group's teeth, keeping the points of the solid that lie on the group's span.
 #pragma once
 
 #include <vector>
@@ -24,6 +24,8 @@ struct ToothGroup {
   double leaf = 0;            // the shortest interval halved where the faces agree, in t
   bool spanned = false;       // the teeth's edges cover `span` only
   EdgeSpan span;              // of the nominal profile (before the radial offset)
+  ToothRake rake;             // the teeth's rake
+  RakeLag lag;                // its lag, from the nominal profile's point at span.from
   // The radii from the axis between which the span's points lie (with the offset), mm.
   double spanRadiusMin = 0, spanRadiusMax = 0;
 

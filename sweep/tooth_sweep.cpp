@@ -6,19 +6,21 @@
 // (cutterLowestPoint) and leaves it at its highest X(t) (the lowest point of the cutter
 // mirrored in z). A point of the cutter's surface lies on an edge exactly when its
 // body angle is an edge's: with E - T = h a + rho (cos theta e1 + sin theta e2),
-//     F(t) = flutes (theta(t) + phi(t) - h(t) tan(beta) / R) / (2 pi)
-// is an integer (tooth k = F mod flutes). So the edges cross the line where F(t) is
-// an integer, at the heights E(t).z, and where the same function of X(t) is one, at
-// X(t).z; the top cap (h = L) carries no edge. Every crossing of the line with an edge
-// is one of these: an edge lies on the cutter's boundary, and the line meets the
-// boundary only at E and X (or, where it runs along a face, in a segment whose lowest
-// point is E).
+//     F(t) = flutes (theta(t) + phi(t) - h(t) tan(beta) / R - lambda(rho(t), h(t))) / (2 pi)
+// is an integer (tooth k = F mod flutes), lambda the rake's lag (RakeLag, zero without
+// rake; a raked edge stays on the profile's surface of revolution, at the angle that
+// puts it on its rake face, so every other argument here holds as it is). So the edges
+// cross the line where F(t) is an integer, at the heights E(t).z, and where the same
+// function of X(t) is one, at X(t).z; the top cap (h = L) carries no edge. Every
+// crossing of the line with an edge is one of these: an edge lies on the cutter's
+// boundary, and the line meets the boundary only at E and X (or, where it runs along a
+// face, in a segment whose lowest point is E).
 //
 // Finding every root. phi turns at phaseRate (rad per unit t), 2 pi / flutes in one
 // tooth period; theta and h move with the line's motion relative to the cutter, slowly
 // except near the cutter's axis (theta turns fast; every edge meets there) and the
 // silhouette (E and X meet). F is sampled a quarter tooth period apart; an interval on
-// which the point's own turn (theta less the helix's lag) exceeds half of the spindle's,
+// which the point's own turn (theta less the edge's lag) exceeds half of the spindle's,
 // or whose ends meet different faces, is halved. On the intervals left F is monotone,
 // so its integers between the end values are all its roots; each is solved by bracketed
 // regula falsi until F's residual times dz/dF is below 1e-13 mm. Halving stops at
@@ -119,6 +121,7 @@ struct ToothSweep::Sample {
   double z[2] = {0, 0};          // E(t).z, X(t).z, mm
   double theta[2] = {0, 0};      // their angles from e1, (-pi, pi]
   double h[2] = {0, 0};          // their heights above the tip along the axis, mm
+  double rake[2] = {0, 0};       // the rake's lag of an edge point there (RakeLag), rad
   Vec3 normal0;                  // the entry point's normal
 };
 
@@ -183,7 +186,8 @@ Vec3 ToothSweep::edgePoint(int k, double h, double rho, double t) const {
     const double r = cutter_.cornerRadius, rb = cutter_.bottomRadius();
     rho = h >= r ? cutter_.radius : rb + std::sqrt(std::max(0.0, r * r - (r - h) * (r - h)));
   }
-  const double psi = cutter_.teeth.toothAngle(k) + h * helixSlope_ - phi;
+  const RakeLag rake = cutter_.rakeLag(k);
+  const double psi = cutter_.teeth.toothAngle(k) + h * helixSlope_ + rake(rho, h) - phi;
   const double psiR = runoutPhase_ - phi;
   const ToothOffset o = cutter_.teeth.toothOffset(k);
   return curve_.tip(t) + cutter_.teeth.runout * (std::cos(psiR) * e1 + std::sin(psiR) * e2) +
@@ -263,6 +267,9 @@ void ToothSweep::needSide(const Group& g, Sample& s, int side, double x, double 
   s.z[side] = lp.z + T.z;
   s.h[side] = h;
   s.theta[side] = std::atan2(dot(across, s.e2), dot(across, s.e1));
+  // The rake's lag of an edge point there, at the nominal radius (the group's solid is
+  // the nominal profile moved out by its radial offset).
+  if (g.lag.active()) s.rake[side] = g.lag(length(across) - g.radial, h);
   if (!on) return;
   if (side == 0) s.normal0 = lp.normal;
 }
@@ -335,19 +342,22 @@ double ToothSweep::exitBound(const Group& g, const Sample& a, const Sample& b, d
 // F(b) - F(a) for one side, with theta unwrapped the short way (intervals are small).
 double ToothSweep::deltaF(const Sample& a, const Sample& b, int side) const {
   const double dTheta = wrapAngle(b.theta[side] - a.theta[side]);
-  return cutter_.teeth.flutes * (dTheta + (b.phi - a.phi) - (b.h[side] - a.h[side]) * helixSlope_) /
+  return cutter_.teeth.flutes *
+         (dTheta + (b.phi - a.phi) - (b.h[side] - a.h[side]) * helixSlope_ -
+          (b.rake[side] - a.rake[side])) /
          kTwoPi;
 }
 
 double ToothSweep::absoluteF(const Sample& s, int side) const {
-  return cutter_.teeth.flutes * (s.theta[side] + s.phi - s.h[side] * helixSlope_) / kTwoPi;
+  return cutter_.teeth.flutes * (s.theta[side] + s.phi - s.h[side] * helixSlope_ - s.rake[side]) /
+         kTwoPi;
 }
 
 // Whether F can be trusted to be monotone between a and b on this side: the piercing
-// point's own turn (its angle less the helix's lag) is at most half of the spindle's.
+// point's own turn (its angle less the edge's lag) is at most half of the spindle's.
 bool ToothSweep::calm(const Sample& a, const Sample& b, int side) const {
-  const double own =
-      wrapAngle(b.theta[side] - a.theta[side]) - (b.h[side] - a.h[side]) * helixSlope_;
+  const double own = wrapAngle(b.theta[side] - a.theta[side]) -
+                     (b.h[side] - a.h[side]) * helixSlope_ - (b.rake[side] - a.rake[side]);
   return std::abs(own) <= 0.5 * std::abs(b.phi - a.phi);
 }
 

@@ -15,9 +15,10 @@
 // Tooth k's edge point at height h above the tip (radius rho(h) on the profile, or on
 // the flat bottom at radius rho <= Rb with h = 0), with its offsets (dr_k, da_k), is
 //     tip(t) + runout (cos(psi_r - phi) e1 + sin(psi_r - phi) e2)
-//            + (rho + dr_k) (cos(psi_k + h tan(beta) / R - phi) e1 + sin(...) e2)
+//            + (rho + dr_k) (cos(psi_k + h tan(beta) / R + lambda_k - phi) e1 + sin(...) e2)
 //            + (h - da_k) a(t)
-// with psi_k its body angle and psi_r the runout phase (CutterTeeth).
+// with psi_k its body angle, psi_r the runout phase (CutterTeeth) and lambda_k(rho, h)
+// its rake's lag (RakeLag; 0 without rake), at the nominal rho and h.
 #pragma once
 
 #include <cmath>

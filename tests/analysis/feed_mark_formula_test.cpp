@@ -184,6 +184,15 @@ TEST(FeedMarkFormula, WhereItDoesNotApply) {
   EXPECT_FALSE(predictFeedMarks(ball, 0, 0, 0.1).applicable);
   EXPECT_FALSE(predictFeedMarks(ball, 15, 5, 0.1).applicable);
   EXPECT_FALSE(predictFeedMarks(ball, 15, 0, 6).applicable);  // fz >= 2 rho_f
+  // A raked edge leaves sheared arcs: said, not predicted as if it were not raked; a
+  // rake of zero changes nothing.
+  Cutter raked = ball;
+  raked.teeth.toothRakes = {{5, 0}, {0, 0}};
+  const FeedMarkPrediction r = predictFeedMarks(raked, 15, 0, 0.1);
+  EXPECT_FALSE(r.applicable);
+  EXPECT_NE(r.reason.find("raked edge"), std::string::npos) << r.reason;
+  raked.teeth.toothRakes = {{0, 0}, {0, 0}};
+  EXPECT_TRUE(predictFeedMarks(raked, 15, 0, 0.1).applicable);
   // A leaning bull touches with its corner arc; a cone with its sharp point (or, at its
   // half-angle's complement, along its flank): no arc.
   EXPECT_TRUE(predictFeedMarks(Cutter::make(CutterType::Bull, 5, 1), 3, 0, 0.1).applicable);

@@ -10,14 +10,18 @@
 //     flank   up to u = Rb + r pi / 2 + L - r:  rho = R, h from r to L
 // and at time t its point is (tooth_sweep.h)
 //     P(k, u, t) = tip(t) + Q(t) [ runout (cos(psi_r - phi) e1 + sin(psi_r - phi) e2)
-//                   + (rho + dr_k) (cos(psi_k + h tan(beta) / R - phi) e1 + sin(...) e2)
+//                   + (rho + dr_k) (cos(psi_k + h tan(beta) / R + lambda_k - phi) e1
+//                                   + sin(...) e2)
 //                   + (h - da_k) a0 ]
 // with psi_k tooth k's body angle (2 pi k / flutes, or tooth_angles_deg), (dr_k, da_k)
-// its tooth_offsets, (e1, e2, a0) the spindle frame at t = 0 (e1 = world X made
-// perpendicular to a0, world Y when a0 is within 30 degrees of X; e2 = a0 x e1, or
-// e1 x a0 for a counter-clockwise spindle), Q(t) the axis's rotation (slerp: a turn
-// about w = a0 x a1 / |a0 x a1| by the angle between them times t, written here with
-// Rodrigues' formula) and phi = phaseStart + phaseRate t.
+// its tooth_offsets, lambda_k(rho, h) the angle at which the profile's circle at (rho,
+// h) meets tooth k's rake face (tooth_geometry.h's ToothRake; solved by bisection,
+// sharing nothing with RakeLag's closed form; 0 without rake), (e1, e2, a0) the
+// spindle frame at t = 0 (e1 = world X made perpendicular to a0, world Y when a0 is
+// within 30 degrees of X; e2 = a0 x e1, or e1 x a0 for a counter-clockwise spindle),
+// Q(t) the axis's rotation (slerp: a turn about w = a0 x a1 / |a0 x a1| by the angle
+// between them times t, written here with Rodrigues' formula) and phi = phaseStart +
+// phaseRate t.
 //
 // A tooth whose edge covers a span of the profile (CutterTeeth::edgeSpans, [from, to] in
 // this arc length u) has only u in [from, to]: every tooth's u below runs over its span.
@@ -25,14 +29,16 @@
 // The search: the lowest z over every k, u in [0, U], t in [0, 1] with P.xy = (x, y),
 // by best-first subdivision of the (u, t) rectangle of each tooth. A cell of half-sizes
 // (du, dt) around its centre c holds no edge point farther than
-//     B = Lu du + Lt dt   from P(c),   Lu = hypot(1, (R + |dr|max) tan(beta) / R),
+//     B = Lu du + Lt dt   from P(c),   Lu = hypot(1, (R + |dr|max) tan(beta) / R
+//                                                 + the rake's turn bound),
 //     Lt = |p1 - p0| + (turn + |phaseRate|) (runout + hypot(rho(u_top) + |dr|max,
 //                                                           h(u_top) + |da|max))
 // (|dP/du| <= Lu: the meridian is by arc length, the helix adds (rho + dr) tan(beta) / R
-// across it; |dP/dt|: the tip's speed plus the rotation of the body point,
-// whose angular velocity is at most turn + |phaseRate|). So a cell can hold a crossing
-// only if |P(c).xy - (x, y)| <= B, and none below P(c).z - B. Cells are taken lowest
-// bound first and halved; Newton on the 2x2 system P(u, t).xy = (x, y) (clamped to the
+// across it, a rake its own turn, bounded per tooth in the test file; |dP/dt|: the
+// tip's speed plus the rotation of the body point, whose angular velocity is at most
+// turn + |phaseRate|). So a cell can hold a crossing only if |P(c).xy - (x, y)| <= B,
+// and none below P(c).z - B. Cells are taken lowest bound first and halved; Newton on
+// the 2x2 system P(u, t).xy = (x, y) (clamped to the
 // domain) is run from a cell once it is small, and every converged root is a real
 // crossing, so the lowest root found is an upper bound of the answer and the search
 // stops when no cell's bound is below it less 1e-9 mm (the answer is within 1e-9 mm of

@@ -106,6 +106,50 @@ EdgeSpot profileAt(const Cutter& c, double u) {
   return {R, r + (u - cornerEnd)};
 }
 
+// A tooth's rake face (tooth_geometry.h's ToothRake): in the tooth's frame (radial c,
+// trailing s, axial h) the plane s = (c - rho0) tan(gr) + (h - h0) tan(ga) through the
+// profile's point (rho0, h0) at the start of the tooth's span. The edge point of the
+// profile's circle at (rho, h) is where the circle meets it: the angle lambda from the
+// radial line that solves
+//     g(lambda) = rho sin(lambda) - (rho cos(lambda) - rho0) tan(gr) - (h - h0) tan(ga) = 0,
+// found here by bisection on (gr - pi / 2, gr + pi / 2), where g' = rho cos(lambda - gr)
+// / cos(gr) > 0 (the root through P0: lambda = 0 there).
+struct Rake {
+  bool on = false;
+  double gr = 0, ga = 0, rho0 = 0, h0 = 0;
+  Rake(const ToothRake& r, const EdgeSpot& p0)
+      : on(r.axialDeg != 0 || r.radialDeg != 0),
+        gr(r.radialDeg * kPi / 180),
+        ga(r.axialDeg * kPi / 180),
+        rho0(p0.rho),
+        h0(p0.h) {}
+  double lag(const EdgeSpot& p) const {
+    if (!on) return 0;
+    if (p.rho <= 0) return gr;  // the axis: the plane through it is the radial line turned by gr
+    auto g = [&](double l) {
+      return p.rho * std::sin(l) - (p.rho * std::cos(l) - rho0) * std::tan(gr) -
+             (p.h - h0) * std::tan(ga);
+    };
+    double lo = gr - kPi / 2, hi = gr + kPi / 2;
+    for (int i = 0; i < 64 && hi - lo > 1e-16; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (g(mid) < 0 ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  }
+  // A bound of (rho + |dr|) |d lambda / du| along the profile (by arc length, |rho'|,
+  // |h'| <= 1): differentiating g = 0,
+  //     d lambda / du = (tan(ga) cos(gr) h' - sin(lambda - gr) rho') / (rho cos(lambda - gr)),
+  // and the input check keeps |sin(lambda - gr)| <= sin(60 deg) (Cutter::checkRakes), so
+  // cos(lambda - gr) >= 1/2 and (rho + |dr|) |lambda'| <= 2 (1 + |dr| / rho) (|tan(ga)
+  // cos(gr)| + sin(60 deg)), rho no less than the span's least radius rhoMin.
+  double turnBound(double dr, double rhoMin) const {
+    if (!on) return 0;
+    const double grow = dr == 0 ? 1 : 1 + dr / rhoMin;  // rhoMin > 0 where a tooth is offset
+    return 2 * grow * (std::fabs(std::tan(ga) * std::cos(gr)) + std::sin(kPi / 3));
+  }
+};
+
 // The cutter, the move and the fixed parts of the definition.
 struct Edges {
   Cutter c;
@@ -116,11 +160,12 @@ struct Edges {
   double slope = 0;  // tan(beta) / R
   double psiR = 0;   // runout phase, rad
   double U = 0;      // edge length
-  double Lu = 1;     // |dP/du| bound
   double tipSpeed = 0;
   std::vector<double> psi;        // each tooth's body angle, rad
   std::vector<double> dr, da;     // each tooth's offsets, mm
   std::vector<double> uLo, uHi;   // each tooth's edge: arc lengths [uLo, uHi] (its span)
+  std::vector<Rake> rake;         // each tooth's rake face
+  std::vector<double> Lu;         // each tooth's |dP/du| bound
   double drMost = 0, daMost = 0;  // their largest sizes
 
   Edges(const Cutter& cutter, const ToothMove& move) : c(cutter), m(move) {
@@ -160,9 +205,16 @@ struct Edges {
       // starts at radius dr: point() needs nothing more).
       uLo.back() = std::max(uLo.back(), -dr[size_t(k)]);
     }
-    // |dP/du|: the meridian by arc length, and the helix's turn of a point at radius
-    // at most R + |dr|max.
-    Lu = std::hypot(1.0, (c.radius + drMost) * slope);
+    // |dP/du|: the meridian by arc length, and the turn of a point at radius at most
+    // R + |dr|max: the helix's, and the rake's (Rake::turnBound).
+    for (int k = 0; k < flutes; ++k) {
+      const ToothRake tr = c.teeth.toothRakes.empty() ? ToothRake{} : c.teeth.toothRakes[size_t(k)];
+      const double from = c.teeth.edgeSpans.empty() ? 0 : c.teeth.edgeSpans[size_t(k)].from;
+      rake.push_back(Rake(tr, spot(from)));
+      const double rhoMin = spot(uLo[size_t(k)]).rho;
+      Lu.push_back(std::hypot(1.0, (c.radius + drMost) * slope +
+                                       rake.back().turnBound(std::fabs(dr[size_t(k)]), rhoMin)));
+    }
     tipSpeed = length(m.p1 - m.p0);
   }
 
@@ -180,7 +232,7 @@ struct Edges {
   Vec3 point(int k, double u, double t) const {
     const EdgeSpot s = spot(u);
     const double phi = m.phaseStart + m.phaseRate * t;
-    const double ang = psi[size_t(k)] + s.h * slope - phi;
+    const double ang = psi[size_t(k)] + s.h * slope + rake[size_t(k)].lag(s) - phi;
     const Vec3 body = (e1 * std::cos(psiR - phi) + e2 * std::sin(psiR - phi)) * c.teeth.runout +
                       (e1 * std::cos(ang) + e2 * std::sin(ang)) * (s.rho + dr[size_t(k)]) +
                       a0 * (s.h - da[size_t(k)]);
@@ -306,7 +358,7 @@ ToothHit toothLowest(const Cutter& c, const ToothMove& m, double x, double y, To
     Cell cell{k, u0, u1, t0, t1, {}, 0, 0, tried};
     cell.p = e.point(k, 0.5 * (u0 + u1), 0.5 * (t0 + t1));
     ++st.cells;
-    cell.B = e.Lu * 0.5 * (u1 - u0) + e.Lt(u1) * 0.5 * (t1 - t0);
+    cell.B = e.Lu[size_t(k)] * 0.5 * (u1 - u0) + e.Lt(u1) * 0.5 * (t1 - t0);
     if (std::hypot(cell.p.x - x, cell.p.y - y) > cell.B) return;
     cell.zLow = cell.p.z - cell.B;
     if (cell.zLow < bestZ) heap.push(cell);
@@ -383,7 +435,7 @@ ToothHit toothLowest(const Cutter& c, const ToothMove& m, double x, double y, To
     }
     // Halve across the larger of the two terms of B.
     const double um = 0.5 * (cell.u0 + cell.u1), tm = 0.5 * (cell.t0 + cell.t1);
-    if (e.Lu * (cell.u1 - cell.u0) >= e.Lt(cell.u1) * (cell.t1 - cell.t0)) {
+    if (e.Lu[size_t(cell.k)] * (cell.u1 - cell.u0) >= e.Lt(cell.u1) * (cell.t1 - cell.t0)) {
       push(cell.k, cell.u0, um, cell.t0, cell.t1, tried);
       push(cell.k, um, cell.u1, cell.t0, cell.t1, tried);
     } else {

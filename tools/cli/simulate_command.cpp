@@ -146,7 +146,7 @@ constexpr const char* kSimulateHelp =
     "    corner_radius), taper_ball|taper_bull|cone|barrel|taper_barrel|oval|lens|profile|apt\n"
     "    (`scallop cutter TOOL --svg F` draws one); flute_length; teeth: flutes, helix_deg,\n"
     "    runout_mm, runout_phase_deg, tooth_offsets, tooth_angles_deg, edge_span,\n"
-    "    tooth_edge_spans (docs/teeth.md)\n"
+    "    tooth_edge_spans, rake_deg, tooth_rakes_deg (docs/teeth.md)\n"
     "  cutting{model (envelope|teeth), feed_per_tooth (mm), phase_deg}, spindle (cw|ccw)\n"
     "  stock{min,max} | stock{stl} | stock{gsf}    grid{spacing, frame{origin,u,normal,size}}\n"
     "  path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,segment_length} | file},\n"

@@ -58,6 +58,41 @@ void parseEdgeSpans(const json& tool, const std::string& f, Cutter& cutter) {
   }
 }
 
+// "rake_deg": [axial_deg, radial_deg] (every tooth) or "tooth_rakes_deg": [[axial_deg,
+// radial_deg], ...] (one per flute), not both; stored one per flute. Read after the
+// spans: a rake face passes through its span's start (Cutter::checkRakes).
+ToothRake rakePair(const json& v, const std::string& field) {
+  if (!v.is_array() || v.size() != 2)
+    throw InputError(
+        field, "expected a pair [axial_deg, radial_deg] (the rake face's angles), got " + v.dump());
+  return {arrayNumber(v[0], field + "[0]", "an axial rake in degrees"),
+          arrayNumber(v[1], field + "[1]", "a radial rake in degrees")};
+}
+
+void parseRakes(const json& tool, const std::string& f, Cutter& cutter) {
+  CutterTeeth& teeth = cutter.teeth;
+  const bool one = tool.contains("rake_deg"), each = tool.contains("tooth_rakes_deg");
+  if (one && each)
+    throw InputError(f + ".tooth_rakes_deg",
+                     "give rake_deg (every tooth) or tooth_rakes_deg (one per flute), not both");
+  std::string field;
+  if (one) {
+    field = f + ".rake_deg";
+    const ToothRake rake = rakePair(tool.at("rake_deg"), field);
+    checkToothRakes({rake}, teeth.flutes, field, false);
+    teeth.toothRakes.assign(size_t(teeth.flutes), rake);
+  } else if (each) {
+    field = f + ".tooth_rakes_deg";
+    const json& a = tool.at("tooth_rakes_deg");
+    if (!a.is_array())
+      throw InputError(field, "expected an array of [axial_deg, radial_deg] pairs, one per flute");
+    for (size_t k = 0; k < a.size(); ++k)
+      teeth.toothRakes.push_back(rakePair(a[k], field + "[" + std::to_string(k) + "]"));
+    checkToothRakes(teeth.toothRakes, teeth.flutes, field, true);
+  }
+  if (one || each) cutter.checkRakes(field);
+}
+
 // "tooth_angles_deg": [deg, ...] and "tooth_offsets": [[radial_mm, axial_mm], ...], one
 // entry per flute (tooth_geometry.h checks the values).
 void parseToothGeometry(const json& tool, const std::string& f, Cutter& cutter) {
@@ -89,14 +124,15 @@ void parseToothGeometry(const json& tool, const std::string& f, Cutter& cutter) 
   checkToothGeometry(teeth.toothAnglesDeg, teeth.toothOffsets, teeth.flutes, cutter.radius,
                      cutter.general() ? cutter.profile->bottomRadius() : cutter.bottomRadius(), f);
   parseEdgeSpans(tool, f, cutter);
+  parseRakes(tool, f, cutter);
 }
 
 }  // namespace
 
 Cutter parseCutter(const json& tool, const std::string& f) {
   static const std::set<std::string> teethKeys = {
-      "flutes",           "helix_deg",     "runout_mm", "runout_phase_deg",
-      "tooth_angles_deg", "tooth_offsets", "edge_span", "tooth_edge_spans"};
+      "flutes",        "helix_deg", "runout_mm",        "runout_phase_deg", "tooth_angles_deg",
+      "tooth_offsets", "edge_span", "tooth_edge_spans", "rake_deg",         "tooth_rakes_deg"};
   const std::string typeName = text(tool, "type", f + ".type");
   Cutter cutter;
   if (shapedCutterTypeNames().count(typeName)) {
@@ -209,6 +245,17 @@ json cutterToJson(const Cutter& c) {
       json each = json::array();
       for (const EdgeSpan& e : spans) each.push_back({e.from, e.to});
       j["tooth_edge_spans"] = each;
+    }
+  }
+  const std::vector<ToothRake>& rakes = c.teeth.toothRakes;
+  if (!rakes.empty()) {
+    if (std::all_of(rakes.begin(), rakes.end(),
+                    [&](const ToothRake& r) { return r == rakes[0]; })) {
+      j["rake_deg"] = {rakes[0].axialDeg, rakes[0].radialDeg};
+    } else {
+      json each = json::array();
+      for (const ToothRake& r : rakes) each.push_back({r.axialDeg, r.radialDeg});
+      j["tooth_rakes_deg"] = each;
     }
   }
   // A general cutter's solid is its profile: echoed, so a report says what was swept.

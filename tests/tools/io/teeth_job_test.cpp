@@ -218,6 +218,50 @@ TEST(TeethJob, EdgeSpansAreReadEchoedAndChecked) {
   refused(R"("edge_span": [0, 3], "tooth_edge_spans": [[0, 3], [0, 3]])", "tool.tooth_edge_spans");
 }
 
+// Rakes: "rake_deg" for every tooth, "tooth_rakes_deg" one per flute, echoed as given;
+// an angle out of range, a wrong shape, both keys, or a face that leaves the cutter's
+// surface on the edge's span names its field (and the tooth and height).
+TEST(TeethJob, RakesAreReadEchoedAndChecked) {
+  const std::string rest = R"("cutting": {"model": "teeth", "feed_per_tooth": 0.4},
+      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
+      "path": {"file": "p.nc"})";
+  auto tool = [](const std::string& keys) {
+    return R"({"tool": {"type": "bull", "radius": 10, "corner_radius": 5, "flute_length": 8,
+        "flutes": 2, "edge_span": [5, 12.85], )" +
+           keys + "}, ";
+  };
+  const Job one = parseJob(tool(R"("rake_deg": [6, -4])") + rest + "}", "job.json");
+  ASSERT_EQ(one.cutter.teeth.toothRakes.size(), 2u);
+  EXPECT_EQ(one.cutter.teeth.toothRakes[1].axialDeg, 6);
+  EXPECT_EQ(one.cutter.teeth.toothRakes[1].radialDeg, -4);
+  EXPECT_EQ(jobToJson(one)["tool"]["rake_deg"], json::parse("[6, -4]"));
+  const Job each =
+      parseJob(tool(R"("tooth_rakes_deg": [[6, -4], [0, 0]])") + rest + "}", "job.json");
+  EXPECT_EQ(jobToJson(each)["tool"]["tooth_rakes_deg"], json::parse("[[6, -4], [0, 0]]"));
+  auto refused = [&](const std::string& keys, const std::string& field) {
+    expectRejected([&] { parseJob(tool(keys) + rest + "}", "job.json"); }, field);
+  };
+  refused(R"("rake_deg": [46, 0])", "tool.rake_deg");
+  refused(R"("rake_deg": [0, -50])", "tool.rake_deg");
+  refused(R"("rake_deg": [3])", "tool.rake_deg");
+  refused(R"("rake_deg": [3, "x"])", "tool.rake_deg[1]");
+  refused(R"("tooth_rakes_deg": [[0, 3]])", "tool.tooth_rakes_deg");
+  refused(R"("tooth_rakes_deg": [[0, 3], [0, 90]])", "tool.tooth_rakes_deg[1]");
+  refused(R"("rake_deg": [0, 3], "tooth_rakes_deg": [[0, 3], [0, 3]])", "tool.tooth_rakes_deg");
+  // A ball's whole edge with an axial rake of 30 deg: the face through the tip's axis
+  // rises as h tan(30 deg) and leaves the flank (radius 2) near h = 2 sin(60 deg) /
+  // tan(30 deg) = 3 mm, below the flute top at 8 mm.
+  const std::string message = inputErrorMessage([&] {
+    parseJob(R"({"tool": {"type": "ball", "radius": 2, "flute_length": 8, "rake_deg": [30, 0]}, )" +
+                 rest + "}",
+             "job.json");
+  });
+  EXPECT_NE(message.find("tool.rake_deg"), std::string::npos) << message;
+  EXPECT_NE(message.find("tooth 0's rake face leaves the cutter's surface at height 3"),
+            std::string::npos)
+      << message;
+}
+
 class TeethJobFiles : public scallop::test::CliFixture {};
 
 TEST_F(TeethJobFiles, AMoveWithoutFeedPerToothNamesTheFieldAndTheLine) {
