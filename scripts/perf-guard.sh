@@ -144,7 +144,7 @@ awk -v ref="$work/ref.txt" -v t="$threshold" -v label="$label" -v against="$agai
     bad = 0
   }
   {
-    if (!($1 in rc)) { printf "%-4s not in %s\n", $1, label; next }
+    if (!($1 in rc)) { printf "%-4s not in %s; now %.1f a cell, %.1f a move, hash %s\n", $1, label, $2, $3, $4; next }
     # Against another commit, a case whose heights differ is other work (B3 was
     # redefined at the turning-axis landing): shown, not judged.
     if (against != "" && $4 != rh[$1]) { printf "%-4s heights differ from %s: other work, not compared\n", $1, label; next }

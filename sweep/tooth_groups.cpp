@@ -122,6 +122,15 @@ bool ToothGroup::hasRootIn(double lo, double hi) const {
 // runs `radial` ahead of the nominal edge's.
 bool ToothGroup::onSpan(double h, double rho) const {
   if (!spanned) return true;
+  // A ball, flat or bull profile widens from the axis up (its radius is non-decreasing in
+  // u): a point whose radius lies strictly between the span's end radii has u strictly
+  // between its ends (u <= from would give rho <= rho(from)), so it lies on the span
+  // without its arc length (an atan2 on the corner; a tooth moved out is spanned [0, U],
+  // and this is most of its points). The margin keeps the flank, whose radius is the
+  // largest all the way up, out of it whatever the rounding of rho.
+  const double margin = 1e-9 * (1 + spanRadiusMax);
+  if (!cutter.general() && rho > spanRadiusMin + margin && rho < spanRadiusMax - margin)
+    return true;
   const double u = cutter.edgeArcLength(h, rho) - radial;
   return u >= span.from && u <= span.to;
 }

@@ -119,9 +119,10 @@ struct ToothSweep::Sample {
   bool hit[2] = {false, false};  // the line meets the cutter at an edge-bearing face
   bool off[2] = {false, false};  // it meets the solid off the teeth's edge span (z, theta, h set)
   double z[2] = {0, 0};          // E(t).z, X(t).z, mm
-  double theta[2] = {0, 0};      // their angles from e1, (-pi, pi]
+  // Their angles from e1, (-pi, pi], less the rake's lag of an edge point there (RakeLag;
+  // F takes the angle and the lag only as theta - lambda).
+  double theta[2] = {0, 0};
   double h[2] = {0, 0};          // their heights above the tip along the axis, mm
-  double rake[2] = {0, 0};       // the rake's lag of an edge point there (RakeLag), rad
   Vec3 normal0;                  // the entry point's normal
 };
 
@@ -267,9 +268,9 @@ void ToothSweep::needSide(const Group& g, Sample& s, int side, double x, double 
   s.z[side] = lp.z + T.z;
   s.h[side] = h;
   s.theta[side] = std::atan2(dot(across, s.e2), dot(across, s.e1));
-  // The rake's lag of an edge point there, at the nominal radius (the group's solid is
-  // the nominal profile moved out by its radial offset).
-  if (g.lag.active()) s.rake[side] = g.lag(length(across) - g.radial, h);
+  // The rake's lag at the nominal radius (the group's solid is the nominal profile moved
+  // out by its radial offset).
+  if (g.lag.active()) s.theta[side] -= g.lag(length(across) - g.radial, h);
   if (!on) return;
   if (side == 0) s.normal0 = lp.normal;
 }
@@ -342,22 +343,19 @@ double ToothSweep::exitBound(const Group& g, const Sample& a, const Sample& b, d
 // F(b) - F(a) for one side, with theta unwrapped the short way (intervals are small).
 double ToothSweep::deltaF(const Sample& a, const Sample& b, int side) const {
   const double dTheta = wrapAngle(b.theta[side] - a.theta[side]);
-  return cutter_.teeth.flutes *
-         (dTheta + (b.phi - a.phi) - (b.h[side] - a.h[side]) * helixSlope_ -
-          (b.rake[side] - a.rake[side])) /
+  return cutter_.teeth.flutes * (dTheta + (b.phi - a.phi) - (b.h[side] - a.h[side]) * helixSlope_) /
          kTwoPi;
 }
 
 double ToothSweep::absoluteF(const Sample& s, int side) const {
-  return cutter_.teeth.flutes * (s.theta[side] + s.phi - s.h[side] * helixSlope_ - s.rake[side]) /
-         kTwoPi;
+  return cutter_.teeth.flutes * (s.theta[side] + s.phi - s.h[side] * helixSlope_) / kTwoPi;
 }
 
 // Whether F can be trusted to be monotone between a and b on this side: the piercing
 // point's own turn (its angle less the edge's lag) is at most half of the spindle's.
 bool ToothSweep::calm(const Sample& a, const Sample& b, int side) const {
-  const double own = wrapAngle(b.theta[side] - a.theta[side]) -
-                     (b.h[side] - a.h[side]) * helixSlope_ - (b.rake[side] - a.rake[side]);
+  const double own =
+      wrapAngle(b.theta[side] - a.theta[side]) - (b.h[side] - a.h[side]) * helixSlope_;
   return std::abs(own) <= 0.5 * std::abs(b.phi - a.phi);
 }
 

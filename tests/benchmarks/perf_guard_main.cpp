@@ -56,16 +56,40 @@ struct GuardCase {
 // named: scripts/perf-guard.sh --case B9, for the scene's instructions a move.
 // B6 and B7 (general-profile cutters on B3's and B1's paths, issue 33) likewise, at B3's
 // and B1's areas: scripts/perf-guard.sh --case B6 --case B7.
-constexpr GuardCase kCases[] = {{"B1", 1.0}, {"B3", 1.0}, {"B4", 5.0},
-                                {"B6", 1.0}, {"B7", 1.0}, {"B9", 4.0}};
+// B5 (B1 with teeth) and two variants of it, for issue 35's cost of per-tooth geometry
+// relative to B5: B5o with tooth 1 moved out by 3 um (both teeth cut: two groups) and
+// B5d with tooth 1 at [2, 9] um (it finishes alone) and B5r with every tooth raked
+// [5, 3] degrees, at 0.6 mm (3.6e5 cells): named only.
+constexpr GuardCase kCases[] = {{"B1", 1.0},  {"B3", 1.0},  {"B4", 5.0}, {"B5", 0.6},
+                                {"B5o", 0.6}, {"B5d", 0.6}, {"B5r", 0.6}, {"B6", 1.0},
+                                {"B7", 1.0},  {"B9", 4.0}};
+
+bool namedOnly(const std::string& name) {
+  return name != "B1" && name != "B3" && name != "B4";
+}
+
+// B5r's rakes, where the tree has them (--against REV may build an older one).
+template <class Teeth>
+auto rakeEveryTooth(Teeth& teeth, int) -> decltype(teeth.toothRakes, void()) {
+  using Rake = typename decltype(teeth.toothRakes)::value_type;
+  teeth.toothRakes.assign(size_t(teeth.flutes), Rake{5, 3});
+}
+template <class Teeth>
+void rakeEveryTooth(Teeth&, long) {}
 
 void runCase(const GuardCase& c, double extraPercent) {
   BenchCaseOptions options;
   options.area = c.areaMm;
-  const BenchCase b = makeBenchCase(c.name, options);
-  // The guard's cases cut with the envelope (no teeth), so the default options are the
-  // bench's (and trees older than the teeth model build this driver too).
-  const SimulationOptions simulation;
+  const std::string name = c.name;
+  BenchCase b = makeBenchCase(name.substr(0, 2), options);
+  if (name == "B5o") b.cutter.teeth.toothOffsets = {{0, 0}, {0.003, 0}};
+  if (name == "B5d") b.cutter.teeth.toothOffsets = {{0, 0}, {0.002, 0.009}};
+  if (name == "B5r") rakeEveryTooth(b.cutter.teeth, 0);
+  // The default cases cut with the envelope (no teeth): the default options are the
+  // bench's (and trees older than the teeth model build this driver too). B5's teeth
+  // come with their case.
+  SimulationOptions simulation;
+  if (name.rfind("B5", 0) == 0) simulation.cutting = b.cutting;
 
   const std::string sceneDump = std::string(c.name) + " scene";
   const std::string castDump = std::string(c.name) + " cast";
@@ -105,7 +129,8 @@ int main(int argc, char** argv) {
     for (const scallop::GuardCase& c : scallop::kCases) known = known || w == c.name;
     if (!known) {
       std::fprintf(stderr,
-                   "scallop_perf_guard: unknown case '%s' (expected B1, B3, B4, B6, B7 or B9)\n",
+                   "scallop_perf_guard: unknown case '%s' (expected B1, B3, B4, B5, B5o, B5d, "
+                   "B5r, B6, B7 or B9)\n",
                    w.c_str());
       return 1;
     }
@@ -113,7 +138,7 @@ int main(int argc, char** argv) {
   try {
     for (const scallop::GuardCase& c : scallop::kCases) {
       const std::string name = c.name;
-      bool run = wanted.empty() && name != "B6" && name != "B7" && name != "B9";
+      bool run = wanted.empty() && !scallop::namedOnly(name);
       for (const std::string& w : wanted) run = run || w == c.name;
       if (run) scallop::runCase(c, extraPercent);
     }
