@@ -91,6 +91,7 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
     g.step = equalPitchStep;
     if (!g.everyInteger) g.step *= 2 * gap;
     g.leaf = g.step / 64;
+    g.quarterPeriod = equalPitchStep;
   }
   // The deepest-reaching teeth first: their crossings prune the others' search.
   std::stable_sort(groups.begin(), groups.end(), [](const ToothGroup& a, const ToothGroup& b) {

@@ -21,6 +21,7 @@ struct ToothGroup {
   std::vector<double> roots;
   bool everyInteger = false;  // roots = 0, 1, ..., flutes - 1
   double step = 0;            // the scan step, in t
+  double quarterPeriod = 0;   // a quarter tooth period at equal pitch, in t
   double leaf = 0;            // the shortest interval halved where the faces agree, in t
   bool spanned = false;       // the teeth's edges cover `span` only
   EdgeSpan span;              // of the nominal profile (before the radial offset)

@@ -60,9 +60,8 @@ struct GuardCase {
 // relative to B5: B5o with tooth 1 moved out by 3 um (both teeth cut: two groups) and
 // B5d with tooth 1 at [2, 9] um (it finishes alone) and B5r with every tooth raked
 // [5, 3] degrees, at 0.6 mm (3.6e5 cells): named only.
-constexpr GuardCase kCases[] = {{"B1", 1.0},  {"B3", 1.0},  {"B4", 5.0}, {"B5", 0.6},
-                                {"B5o", 0.6}, {"B5d", 0.6}, {"B5r", 0.6}, {"B6", 1.0},
-                                {"B7", 1.0},  {"B9", 4.0}};
+constexpr GuardCase kCases[] = {{"B1", 1.0},  {"B3", 1.0},  {"B4", 5.0}, {"B5", 0.6}, {"B5o", 0.6},
+                                {"B5d", 0.6}, {"B5r", 0.6}, {"B6", 1.0}, {"B7", 1.0}, {"B9", 4.0}};
 
 bool namedOnly(const std::string& name) {
   return name != "B1" && name != "B3" && name != "B4";
