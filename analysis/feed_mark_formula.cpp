@@ -35,8 +35,8 @@ FeedMarkPrediction notCovered(const std::string& reason) {
 
 // Runout, unequal pitch or a tooth offset: anything that makes the teeth's marks differ.
 bool hasToothErrors(const CutterTeeth& teeth) {
-  if (teeth.runout != 0 || !teeth.toothAnglesDeg.empty()) return true;
-  for (const ToothOffset& o : teeth.toothOffsets)
+  if (teeth.runout != 0 || !teeth.toothAnglesDeg().empty()) return true;
+  for (const ToothOffset& o : teeth.toothOffsets())
     if (o.radial != 0 || o.axial != 0) return true;
   return false;
 }
@@ -67,11 +67,11 @@ SpanCheck teethAtContact(const Cutter& cutter, const ContactArc& arc, double lam
   const double contactHeight = arc.centreS - rho * std::cos(lambda);
   const double uc = cutter.edgeArcLength(contactHeight, contactRho);
   for (int k = 0; k < teeth.flutes; ++k) {
-    if (teeth.edgeSpans.empty()) {
+    if (teeth.edgeSpans().empty()) {
       check.teeth.push_back(k);
       continue;
     }
-    const EdgeSpan& span = teeth.edgeSpans[size_t(k)];
+    const EdgeSpan& span = teeth.edgeSpans()[size_t(k)];
     if (span.from <= uc - halfArc && uc + halfArc <= span.to) {
       check.teeth.push_back(k);
     } else if (span.to > uc - halfArc && span.from < uc + halfArc) {
@@ -116,8 +116,8 @@ FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double
         "needs a lead 0 < |lead| < 90 deg: without one the contact is at the tip, "
         "on the axis, where every tooth passes");
   if (tiltDeg != 0) return notCovered("derived for lead alone (tilt 0)");
-  if (!cutter.teeth.toothRakes.empty() &&
-      std::any_of(cutter.teeth.toothRakes.begin(), cutter.teeth.toothRakes.end(),
+  if (!cutter.teeth.toothRakes().empty() &&
+      std::any_of(cutter.teeth.toothRakes().begin(), cutter.teeth.toothRakes().end(),
                   [](const ToothRake& r) { return !r.zero(); }))
     return notCovered(
         "a raked edge lies off the meridian plane: its points reach the contact at "

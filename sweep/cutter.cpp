@@ -133,20 +133,34 @@ CutterTeeth CutterTeeth::make(int flutes, double helixDeg, double runout, double
   return teeth;
 }
 
+const CutterTeeth::Table& CutterTeeth::table() const {
+  static const Table kNone;
+  return table_ ? *table_ : kNone;
+}
+
+CutterTeeth::Table& CutterTeeth::edit() {
+  if (!table_) {
+    table_ = std::make_shared<Table>();
+  } else if (table_.use_count() > 1) {
+    table_ = std::make_shared<Table>(*table_);
+  }
+  return *table_;
+}
+
 double CutterTeeth::toothAngle(int k) const {
-  if (toothAnglesDeg.empty()) return 2 * kPi * k / flutes;
-  return toothAnglesDeg[size_t(k)] * kPi / 180;
+  if (toothAnglesDeg().empty()) return 2 * kPi * k / flutes;
+  return toothAnglesDeg()[size_t(k)] * kPi / 180;
 }
 
 double CutterTeeth::radialReach() const {
   double most = 0;
-  for (const ToothOffset& o : toothOffsets) most = std::max(most, o.radial);
+  for (const ToothOffset& o : toothOffsets()) most = std::max(most, o.radial);
   return most;
 }
 
 double CutterTeeth::axialReach() const {
   double most = 0;
-  for (const ToothOffset& o : toothOffsets) most = std::max(most, o.axial);
+  for (const ToothOffset& o : toothOffsets()) most = std::max(most, o.axial);
   return most;
 }
 
@@ -187,7 +201,7 @@ void Cutter::edgeSpot(double u, double* rho, double* h) const {
 RakeLag Cutter::rakeLag(int k) const {
   const ToothRake rake = teeth.toothRake(k);
   if (rake.zero()) return {};
-  const double from = teeth.edgeSpans.empty() ? 0 : teeth.edgeSpans[size_t(k)].from;
+  const double from = teeth.edgeSpans().empty() ? 0 : teeth.edgeSpans()[size_t(k)].from;
   double rho0, h0;
   edgeSpot(from, &rho0, &h0);
   return RakeLag(rake, rho0, h0);
@@ -196,11 +210,11 @@ RakeLag Cutter::rakeLag(int k) const {
 void Cutter::checkRakes(const std::string& field) const {
   constexpr int kSamples = 4096;
   const double limit = std::sin(kPi / 3);
-  for (int k = 0; k < teeth.flutes && !teeth.toothRakes.empty(); ++k) {
+  for (int k = 0; k < teeth.flutes && !teeth.toothRakes().empty(); ++k) {
     const RakeLag lag = rakeLag(k);
     if (!lag.active()) continue;
     const EdgeSpan span =
-        teeth.edgeSpans.empty() ? EdgeSpan{0, edgeLength()} : teeth.edgeSpans[size_t(k)];
+        teeth.edgeSpans().empty() ? EdgeSpan{0, edgeLength()} : teeth.edgeSpans()[size_t(k)];
     for (int i = 0; i <= kSamples; ++i) {
       double rho, h;
       edgeSpot(span.from + (span.to - span.from) * i / kSamples, &rho, &h);

@@ -55,21 +55,35 @@ CutterType parseCutterType(const std::string& name, const std::string& field = "
 //     out of the meridian, so its point at (rho, h) trails by RakeLag's angle.
 struct CutterTeeth {
   int flutes = 2;
-  double helixDeg = 0;                    // beta, degrees, in [0, 60]
-  double runout = 0;                      // mm, in [0, R / 10]
-  double runoutPhaseDeg = 0;              // degrees, any finite angle
-  std::vector<double> toothAnglesDeg;     // one per flute; empty: 360 k / flutes
-  std::vector<ToothOffset> toothOffsets;  // one per flute; empty: none
-  std::vector<EdgeSpan> edgeSpans;        // one per flute; empty: every edge whole
-  std::vector<ToothRake> toothRakes;      // one per flute; empty: none
+  double helixDeg = 0;        // beta, degrees, in [0, 60]
+  double runout = 0;          // mm, in [0, R / 10]
+  double runoutPhaseDeg = 0;  // degrees, any finite angle
+  // The per-tooth tables, each one entry per flute or empty (the default):
+  //   toothAnglesDeg  body angles, degrees (empty: 360 k / flutes)
+  //   toothOffsets    offsets (empty: none)
+  //   edgeSpans       spans of the profile (empty: every edge whole)
+  //   toothRakes      rakes (empty: none)
+  // They sit behind one shared pointer (null while all are empty): a Cutter is copied
+  // into every swept move, twice more into a constant-axis move's segment, so four
+  // vectors there cost 96 bytes a copy and the pointer 16 (docs/performance.md, "Memory
+  // a move"). Read them here; edit*() gives a table of this CutterTeeth's own (copied
+  // first when shared), for building a cutter, not while moves share it.
+  const std::vector<double>& toothAnglesDeg() const { return table().anglesDeg; }
+  const std::vector<ToothOffset>& toothOffsets() const { return table().offsets; }
+  const std::vector<EdgeSpan>& edgeSpans() const { return table().spans; }
+  const std::vector<ToothRake>& toothRakes() const { return table().rakes; }
+  std::vector<double>& editToothAnglesDeg() { return edit().anglesDeg; }
+  std::vector<ToothOffset>& editToothOffsets() { return edit().offsets; }
+  std::vector<EdgeSpan>& editEdgeSpans() { return edit().spans; }
+  std::vector<ToothRake>& editToothRakes() { return edit().rakes; }
 
   // Tooth k's body angle psi_k, radians.
   double toothAngle(int k) const;
   ToothOffset toothOffset(int k) const {
-    return toothOffsets.empty() ? ToothOffset{} : toothOffsets[size_t(k)];
+    return toothOffsets().empty() ? ToothOffset{} : toothOffsets()[size_t(k)];
   }
   ToothRake toothRake(int k) const {
-    return toothRakes.empty() ? ToothRake{} : toothRakes[size_t(k)];
+    return toothRakes().empty() ? ToothRake{} : toothRakes()[size_t(k)];
   }
   // The largest outward radial offset and the largest axial one towards the tip, mm
   // (0 when no tooth reaches beyond the nominal edge).
@@ -80,6 +94,17 @@ struct CutterTeeth {
   // ".helix_deg", ".runout_mm" (needs the cutter's radius) or ".runout_phase_deg".
   static CutterTeeth make(int flutes, double helixDeg, double runout, double runoutPhaseDeg,
                           double cutterRadius, const std::string& fieldPrefix = "tool");
+
+ private:
+  struct Table {
+    std::vector<double> anglesDeg;
+    std::vector<ToothOffset> offsets;
+    std::vector<EdgeSpan> spans;
+    std::vector<ToothRake> rakes;
+  };
+  const Table& table() const;
+  Table& edit();
+  std::shared_ptr<Table> table_;
 };
 
 struct Cutter {

@@ -9,8 +9,8 @@
 // way the height is the lowest point of the true swept solid, with a proven lower bound within 1e-9
 // mm of the height returned.
 //
-// Memory: sizeof(SweptMove) bytes per move (472), plus, for a constant-axis
-// move, one SweptSegment on the heap (1 056 bytes; see bytesPerMove()).
+// Memory: sizeof(SweptMove) bytes per move (424), plus, for a constant-axis
+// move, one SweptSegment on the heap (1 024 bytes; see bytesPerMove()).
 #pragma once
 
 #include <cmath>

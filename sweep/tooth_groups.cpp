@@ -48,10 +48,10 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
     // crosses, so its edge is the span [0, U] of the nominal edge (a plunge leaves a
     // pillar of radius dr there). Moved in (dr < 0), the edge ends at the axis (the
     // narrowed solid's flat bottom reaches it; nothing passes to the other side).
-    const bool spanned = !teeth.edgeSpans.empty() || o.radial > 0;
-    const EdgeSpan span = !teeth.edgeSpans.empty() ? teeth.edgeSpans[size_t(k)]
-                          : spanned                ? EdgeSpan{0, cutter.edgeLength()}
-                                                   : EdgeSpan{};
+    const bool spanned = !teeth.edgeSpans().empty() || o.radial > 0;
+    const EdgeSpan span = !teeth.edgeSpans().empty() ? teeth.edgeSpans()[size_t(k)]
+                          : spanned                  ? EdgeSpan{0, cutter.edgeLength()}
+                                                     : EdgeSpan{};
     const ToothRake rake = teeth.toothRake(k);
     auto same = [&](const ToothGroup& g) {
       return g.radial == o.radial && g.drop == o.axial && g.span == span && g.rake == rake;
@@ -79,8 +79,8 @@ std::vector<ToothGroup> makeToothGroups(const Cutter& cutter, double equalPitchS
       it = groups.end() - 1;
     }
     // In degrees, so that equal pitch given as angles (0, 120, 240) gives integers.
-    it->roots.push_back(teeth.toothAnglesDeg.empty() ? double(k)
-                                                     : teeth.toothAnglesDeg[size_t(k)] * n / 360);
+    it->roots.push_back(
+        teeth.toothAnglesDeg().empty() ? double(k) : teeth.toothAnglesDeg()[size_t(k)] * n / 360);
   }
   for (ToothGroup& g : groups) {
     g.everyInteger = g.roots.size() == size_t(n);

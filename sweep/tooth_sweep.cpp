@@ -150,7 +150,7 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
                      "a tooth reaching below the tip (axial offset > 0) needs straight moves "
                      "with a constant tool axis");
   double offsetReach = 0;
-  for (const ToothOffset& o : cutter_.teeth.toothOffsets)
+  for (const ToothOffset& o : cutter_.teeth.toothOffsets())
     offsetReach = std::max(offsetReach, std::abs(o.radial) + std::abs(o.axial));
   reach_ = std::hypot(cutter_.fluteLength, cutter_.radius) + cutter_.teeth.runout + offsetReach;
   groups_ = makeToothGroups(cutter_, kStepPeriods * kTwoPi / (cutter_.teeth.flutes * phaseRate_));

@@ -124,19 +124,19 @@ TEST(FeedMarkFormula, RunoutRegimesMeetAtTheThreshold) {
 // from the cutter's: r and a explicitly).
 TEST(FeedMarkFormula, ToothMarksAreTheEdgesMovedByTheirErrors) {
   CutterTeeth teeth = CutterTeeth::make(3, 20, 0.002, 75, 3);
-  teeth.toothAnglesDeg = {0, 110, 230};
-  teeth.toothOffsets = {{0.001, -0.0005}, {0, 0.0008}, {-0.0004, 0}};
+  teeth.editToothAnglesDeg() = {0, 110, 230};
+  teeth.editToothOffsets() = {{0.001, -0.0005}, {0, 0.0008}, {-0.0004, 0}};
   const double lead = 25 * kPi / 180, fz = 0.07, hc = 3 * (1 - std::cos(lead));
   const std::vector<ToothMark> marks = toothMarks(teeth, 3, hc, lead, fz);
   ASSERT_EQ(marks.size(), 3u);
   const double rx = std::cos(lead), rz = -std::sin(lead), ax = std::sin(lead), az = std::cos(lead);
   for (int k = 0; k < 3; ++k) {
-    const double psi = teeth.toothAnglesDeg[size_t(k)] * kPi / 180;
+    const double psi = teeth.toothAnglesDeg()[size_t(k)] * kPi / 180;
     // At the moment tooth k's edge at hc faces the contact, the runout vector's angle
     // from the contact direction is (runout phase) - (psi_k + hc tan(beta) / R).
     const double rel = 75 * kPi / 180 - (psi + hc * std::tan(20 * kPi / 180) / 3);
-    const double q = 0.002 * std::cos(rel) + teeth.toothOffsets[size_t(k)].radial;
-    const double da = teeth.toothOffsets[size_t(k)].axial;
+    const double q = 0.002 * std::cos(rel) + teeth.toothOffsets()[size_t(k)].radial;
+    const double da = teeth.toothOffsets()[size_t(k)].axial;
     const double x = q * rx - da * ax, z = q * rz - da * az;  // the edge's displacement
     EXPECT_NEAR(marks[size_t(k)].positionMm, 3 * fz * psi / (2 * kPi) + x, 1e-15) << k;
     EXPECT_NEAR(marks[size_t(k)].lowerMm, -z, 1e-15) << k;
@@ -187,11 +187,11 @@ TEST(FeedMarkFormula, WhereItDoesNotApply) {
   // A raked edge leaves sheared arcs: said, not predicted as if it were not raked; a
   // rake of zero changes nothing.
   Cutter raked = ball;
-  raked.teeth.toothRakes = {{5, 0}, {0, 0}};
+  raked.teeth.editToothRakes() = {{5, 0}, {0, 0}};
   const FeedMarkPrediction r = predictFeedMarks(raked, 15, 0, 0.1);
   EXPECT_FALSE(r.applicable);
   EXPECT_NE(r.reason.find("raked edge"), std::string::npos) << r.reason;
-  raked.teeth.toothRakes = {{0, 0}, {0, 0}};
+  raked.teeth.editToothRakes() = {{0, 0}, {0, 0}};
   EXPECT_TRUE(predictFeedMarks(raked, 15, 0, 0.1).applicable);
   // A leaning bull touches with its corner arc; a cone with its sharp point (or, at its
   // half-angle's complement, along its flank): no arc.

@@ -30,6 +30,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "raycast/simulation.h"
@@ -69,9 +70,9 @@ bool namedOnly(const std::string& name) {
 
 // B5r's rakes, where the tree has them (--against REV may build an older one).
 template <class Teeth>
-auto rakeEveryTooth(Teeth& teeth, int) -> decltype(teeth.toothRakes, void()) {
-  using Rake = typename decltype(teeth.toothRakes)::value_type;
-  teeth.toothRakes.assign(size_t(teeth.flutes), Rake{5, 3});
+auto rakeEveryTooth(Teeth& teeth, int) -> decltype(teeth.editToothRakes(), void()) {
+  using Rake = typename std::decay_t<decltype(teeth.editToothRakes())>::value_type;
+  teeth.editToothRakes().assign(size_t(teeth.flutes), Rake{5, 3});
 }
 template <class Teeth>
 void rakeEveryTooth(Teeth&, long) {}
@@ -81,8 +82,8 @@ void runCase(const GuardCase& c, double extraPercent) {
   options.area = c.areaMm;
   const std::string name = c.name;
   BenchCase b = makeBenchCase(name.substr(0, 2), options);
-  if (name == "B5o") b.cutter.teeth.toothOffsets = {{0, 0}, {0.003, 0}};
-  if (name == "B5d") b.cutter.teeth.toothOffsets = {{0, 0}, {0.002, 0.009}};
+  if (name == "B5o") b.cutter.teeth.editToothOffsets() = {{0, 0}, {0.003, 0}};
+  if (name == "B5d") b.cutter.teeth.editToothOffsets() = {{0, 0}, {0.002, 0.009}};
   if (name == "B5r") rakeEveryTooth(b.cutter.teeth, 0);
   // The default cases cut with the envelope (no teeth): the default options are the
   // bench's (and trees older than the teeth model build this driver too). B5's teeth

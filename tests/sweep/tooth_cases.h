@@ -76,4 +76,37 @@ inline void checkAgainstReference(const Cutter& c, int n, bool turns, std::mt199
   }
 }
 
+// Random cutter n of the teeth tests: a ball, bull or flat cutter (n % 3) of radius 1-2
+// mm, 1 + n % 3 flutes, a helix when n % 4 == 2, runout when n % 5 == 1.
+inline Cutter randomTeethCutter(int n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const CutterType type = n % 3 == 0   ? CutterType::Ball
+                          : n % 3 == 1 ? CutterType::Bull
+                                       : CutterType::Flat;
+  const double R = 1 + u(rng);
+  Cutter c = Cutter::make(type, R, 0.4 * R, 2 * R);
+  const int flutes = 1 + n % 3;
+  c.teeth = CutterTeeth::make(flutes, n % 4 == 2 ? 30 * u(rng) : 0, n % 5 == 1 ? 0.02 * R : 0,
+                              360 * u(rng), R);
+  return c;
+}
+
+// Its tooth errors: offsets of up to 10 um when n is odd (a ball's edge moved out only:
+// radial >= -(R - r) = 0; raised only on a turning move, which refuses a tooth below the
+// tip), unequal pitch when n % 4 == 3.
+inline void addRandomToothErrors(Cutter& c, int n, bool turns, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const int flutes = c.teeth.flutes;
+  if (n % 2) {
+    for (int k = 0; k < flutes; ++k) {
+      const double radial = c.type == CutterType::Ball ? 0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
+      const double axial = turns ? -0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
+      c.teeth.editToothOffsets().push_back({radial, axial});
+    }
+  }
+  if (n % 4 == 3 && flutes > 1)
+    for (int k = 0; k < flutes; ++k)
+      c.teeth.editToothAnglesDeg().push_back(k == 0 ? 0 : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
+}
+
 }  // namespace scallop

@@ -17,6 +17,7 @@
 #include "base/input_error.h"
 #include "sweep/profile_cases.h"
 #include "sweep/tool_path_sweep.h"
+#include "sweep/tooth_cases.h"
 #include "sweep/tooth_reference.h"
 #include "sweep/tooth_sweep.h"
 #include "tests/support/input_error_message.h"
@@ -24,17 +25,8 @@
 namespace scallop {
 namespace {
 
-CuttingModel teethModel(double fz, double phaseDeg, bool ccw = false) {
-  CuttingModel model;
-  model.kind = CuttingModelKind::Teeth;
-  model.feedPerTooth = fz;
-  model.phaseDeg = phaseDeg;
-  model.counterClockwise = ccw;
-  return model;
-}
-
-std::vector<SweptMove> sweepOne(const Cutter& c, const Vec3& p0, const Vec3& p1, const Vec3& a0,
-                                const Vec3& a1, const CuttingModel& model) {
+std::vector<SweptMove> sweepMoves(const Cutter& c, const Vec3& p0, const Vec3& p1, const Vec3& a0,
+                                  const Vec3& a1, const CuttingModel& model) {
   ToolPath path;
   path.moves.push_back(Move{{p0, a0}, {p1, a1}});
   return sweepToolPath(c, path, model);
@@ -91,12 +83,12 @@ TEST(ToothGeometry, ZeroOffsetsAndEqualAnglesGiveTheDefaultsBits) {
   Cutter plain = Cutter::make(CutterType::Bull, 2, 0.5, 4);
   plain.teeth = CutterTeeth::make(3, 20, 0.01, 40, 2);
   Cutter spelled = plain;
-  spelled.teeth.toothAnglesDeg = {0, 120, 240};
-  spelled.teeth.toothOffsets = {{0, 0}, {0, 0}, {0, 0}};
+  spelled.teeth.editToothAnglesDeg() = {0, 120, 240};
+  spelled.teeth.editToothOffsets() = {{0, 0}, {0, 0}, {0, 0}};
   const Vec3 a = normalize(Vec3{0.2, 0.1, 1});
   const CuttingModel model = teethModel(0.08, 30);
-  const auto m0 = sweepOne(plain, {0, 0, 0}, {1.5, 0.2, -0.1}, a, a, model);
-  const auto m1 = sweepOne(spelled, {0, 0, 0}, {1.5, 0.2, -0.1}, a, a, model);
+  const auto m0 = sweepMoves(plain, {0, 0, 0}, {1.5, 0.2, -0.1}, a, a, model);
+  const auto m1 = sweepMoves(spelled, {0, 0, 0}, {1.5, 0.2, -0.1}, a, a, model);
   int hits = 0;
   for (int i = 0; i < 40; ++i) {
     const double x = -1 + 3.5 * i / 40, y = 0.3 * std::sin(i);
@@ -130,15 +122,16 @@ TEST(ToothGeometry, OffsetsPitchAndDirectionAgreeWithTheReference) {
     const bool turns = n % 4 == 3;
     if (n % 2 == 0) {  // unequal pitch: each tooth up to 20 degrees off its place
       for (int k = 0; k < flutes; ++k)
-        c.teeth.toothAnglesDeg.push_back(k == 0 ? 0 : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
+        c.teeth.editToothAnglesDeg().push_back(k == 0 ? 0
+                                                      : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
     }
     for (int k = 0; k < flutes; ++k) {
       const double radial = type == CutterType::Ball ? 0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
       const double axial = turns ? -0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
-      c.teeth.toothOffsets.push_back({radial, axial});
+      c.teeth.editToothOffsets().push_back({radial, axial});
     }
-    checkToothGeometry(c.teeth.toothAnglesDeg, c.teeth.toothOffsets, flutes, R, c.bottomRadius(),
-                       "tool");
+    checkToothGeometry(c.teeth.toothAnglesDeg(), c.teeth.toothOffsets(), flutes, R,
+                       c.bottomRadius(), "tool");
     const double tilt = 0.5 * u(rng), az = 2 * kPi * u(rng);
     const Vec3 a0{std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt)};
     const Vec3 a1 = turns ? normalize(a0 + Vec3{0.15, -0.1, 0}) : a0;
@@ -147,7 +140,7 @@ TEST(ToothGeometry, OffsetsPitchAndDirectionAgreeWithTheReference) {
     const double fz = 0.05 + 0.1 * u(rng), phaseDeg = 360 * u(rng);
     const bool counter = n % 3 != 1;
     ccw += counter;
-    const auto moves = sweepOne(c, p0, p1, a0, a1, teethModel(fz, phaseDeg, counter));
+    const auto moves = sweepMoves(c, p0, p1, a0, a1, teethModel(fz, phaseDeg, counter));
     ASSERT_EQ(moves.size(), 1u);
     const ref::ToothMove m{
         p0, p1, a0, a1, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (flutes * fz), counter};
@@ -184,17 +177,18 @@ TEST(ToothGeometry, CounterClockwiseIsTheMirroredClockwiseBitForBit) {
     Cutter c = Cutter::make(n % 2 ? CutterType::Bull : CutterType::Ball, 2, 0.6, 5);
     c.teeth = CutterTeeth::make(2 + n % 2, 25, 0.01, 70, 2);
     if (n % 3)
-      c.teeth.toothAnglesDeg =
+      c.teeth.editToothAnglesDeg() =
           n % 2 ? std::vector<double>{0, 100, 250} : std::vector<double>{0, 170};
-    c.teeth.toothOffsets.assign(size_t(c.teeth.flutes), ToothOffset{0.003, 0});
-    c.teeth.toothOffsets[1] = {0.001, n < 6 ? 0.004 : -0.004};
+    c.teeth.editToothOffsets().assign(size_t(c.teeth.flutes), ToothOffset{0.003, 0});
+    c.teeth.editToothOffsets()[1] = {0.001, n < 6 ? 0.004 : -0.004};
     const Vec3 a = n < 2 ? Vec3{0, 0, 1} : normalize(Vec3{0.3, 0.2 * (n - 3), 1});
     const Vec3 a1 = n < 6 ? a : normalize(a + Vec3{-0.1, 0.2, 0});
     const Vec3 p0{0.1, 0.2, 0}, p1{1.3, -0.4, -0.2};
     const auto mirror = [](const Vec3& v) { return Vec3{v.x, -v.y, v.z}; };
-    const auto ccw = sweepOne(c, p0, p1, a, a1, teethModel(0.1, 17, true));
-    const auto cw = sweepOne(c, mirror(p0), mirror(p1), mirror(a), mirror(a1), teethModel(0.1, 17));
-    const auto plain = sweepOne(c, p0, p1, a, a1, teethModel(0.1, 17));
+    const auto ccw = sweepMoves(c, p0, p1, a, a1, teethModel(0.1, 17, true));
+    const auto cw =
+        sweepMoves(c, mirror(p0), mirror(p1), mirror(a), mirror(a1), teethModel(0.1, 17));
+    const auto plain = sweepMoves(c, p0, p1, a, a1, teethModel(0.1, 17));
     ASSERT_EQ(ccw[0].turning(), n >= 6);
     for (int i = 0; i < 30; ++i) {
       const Vec3 at = p0 + (p1 - p0) * u(rng);
@@ -230,8 +224,8 @@ TEST(ToothGeometry, OneToothLowerThanTheThresholdFinishesAlone) {
     for (const bool ccw : {false, true}) {
       Cutter c = Cutter::make(CutterType::Ball, R, 0, 4 * R);
       c.teeth = CutterTeeth::make(2, 0, 0, 0, R);
-      c.teeth.toothOffsets = {{0, 0}, {0, delta}};
-      const auto moves = sweepOne(c, p0, p1, a, a, teethModel(fz, phi0 * 180 / kPi, ccw));
+      c.teeth.editToothOffsets() = {{0, 0}, {0, delta}};
+      const auto moves = sweepMoves(c, p0, p1, a, a, teethModel(fz, phi0 * 180 / kPi, ccw));
       double worst = 0, below = 0;
       for (int i = 0; i <= 40; ++i) {
         const double x = -0.3 + 0.6 * i / 40 + 0.0013;
@@ -259,17 +253,17 @@ TEST(ToothGeometry, OneToothLowerThanTheThresholdFinishesAlone) {
 
 TEST(ToothGeometry, ToothReachingBelowTheTipNeedsAConstantAxis) {
   Cutter c = Cutter::make(CutterType::Ball, 2);
-  c.teeth.toothOffsets = {{0, 0.001}, {0, 0}};
+  c.teeth.editToothOffsets() = {{0, 0.001}, {0, 0}};
   const CuttingModel model = teethModel(0.1, 0);
   try {
-    sweepOne(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, normalize(Vec3{0.2, 0, 1}), model);
+    sweepMoves(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, normalize(Vec3{0.2, 0, 1}), model);
     ADD_FAILURE() << "accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("tooth_offsets"), std::string::npos) << e.what();
   }
-  c.teeth.toothOffsets = {{0, -0.001}, {0.002, 0}};  // raised, or out: any move
-  EXPECT_EQ(sweepOne(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, normalize(Vec3{0.2, 0, 1}), model).size(),
-            1u);
+  c.teeth.editToothOffsets() = {{0, -0.001}, {0.002, 0}};  // raised, or out: any move
+  EXPECT_EQ(
+      sweepMoves(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, normalize(Vec3{0.2, 0, 1}), model).size(), 1u);
 }
 
 // A tooth moved out by dr > 0 starts dr from the axis: on a plunge (every tooth moved out)
@@ -292,12 +286,12 @@ TEST(ToothGeometry, AnEdgeMovedOutStartsThatFarFromTheAxis) {
     // Three teeth: an edge passing the axis would lie between two others (with two it
     // would lie on the other's place and change nothing).
     c.teeth = CutterTeeth::make(3, 0, 0, 0, R);
-    c.teeth.toothOffsets.assign(3, ToothOffset{dr, 0});
+    c.teeth.editToothOffsets().assign(3, ToothOffset{dr, 0});
     const bool ramp = n / 4 == 2;
     const Vec3 a = ramp ? normalize(Vec3{0.1, 0.05, 1}) : Vec3{0, 0, 1};
     const Vec3 p0{0, 0, 0.4}, p1{ramp ? 0.05 : 0.0, 0, -0.3};
     const double fz = 0.05, phaseDeg = 30;
-    const auto moves = sweepOne(c, p0, p1, a, a, teethModel(fz, phaseDeg));
+    const auto moves = sweepMoves(c, p0, p1, a, a, teethModel(fz, phaseDeg));
     const ref::ToothMove m{
         p0, p1, a, a, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (3 * fz)};
     for (double d : {0.2, 0.6, 0.9, 1.2, 3.0, 8.0}) {
@@ -322,9 +316,9 @@ TEST(ToothGeometry, AnEdgeMovedOutStartsThatFarFromTheAxis) {
 // The envelope model ignores the teeth keys, tooth_offsets included (docs/teeth.md).
 TEST(ToothGeometry, EnvelopeModelIgnoresTheOffsets) {
   Cutter c = Cutter::make(CutterType::Ball, 2);
-  const auto plain = sweepOne(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {});
-  c.teeth.toothOffsets = {{0.01, 0.01}, {0, 0}};
-  const auto offset = sweepOne(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {});
+  const auto plain = sweepMoves(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {});
+  c.teeth.editToothOffsets() = {{0.01, 0.01}, {0, 0}};
+  const auto offset = sweepMoves(c, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {});
   for (double x : {-1.0, 0.3, 0.9})
     EXPECT_TRUE(sameBits(plain[0].lowestPoint(x, 0.4).z, offset[0].lowestPoint(x, 0.4).z));
 }

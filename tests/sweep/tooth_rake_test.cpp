@@ -27,16 +27,16 @@ namespace {
 void giveRakes(Cutter& c, double maxDeg, bool shared, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1, 1);
   const int flutes = c.teeth.flutes;
-  c.teeth.toothRakes.clear();
+  c.teeth.editToothRakes().clear();
   const ToothRake one{maxDeg * u(rng), maxDeg * u(rng)};
   for (int k = 0; k < flutes; ++k)
-    c.teeth.toothRakes.push_back(shared ? one : ToothRake{maxDeg * u(rng), maxDeg * u(rng)});
+    c.teeth.editToothRakes().push_back(shared ? one : ToothRake{maxDeg * u(rng), maxDeg * u(rng)});
   for (int tries = 0; tries < 8; ++tries) {
     try {
       c.checkRakes("tool.tooth_rakes_deg");
       return;
     } catch (const InputError&) {
-      for (ToothRake& r : c.teeth.toothRakes) r = {0.5 * r.axialDeg, 0.5 * r.radialDeg};
+      for (ToothRake& r : c.teeth.editToothRakes()) r = {0.5 * r.axialDeg, 0.5 * r.radialDeg};
     }
   }
   FAIL() << "no rake found that the profile accepts";
@@ -51,14 +51,9 @@ TEST(ToothRake, RakedEdgesAgreeWithTheReference) {
   const unsigned long long unprovenBefore = ToothSweep::unprovenSearches();
   ReferenceCheck check;
   for (int n = 0; n < 24; ++n) {
-    const CutterType type = n % 3 == 0   ? CutterType::Ball
-                            : n % 3 == 1 ? CutterType::Bull
-                                         : CutterType::Flat;
-    const double R = 1 + u(rng);
-    Cutter c = Cutter::make(type, R, 0.4 * R, 2 * R);
-    const int flutes = 1 + n % 3;
-    c.teeth = CutterTeeth::make(flutes, n % 4 == 2 ? 30 * u(rng) : 0, n % 5 == 1 ? 0.02 * R : 0,
-                                360 * u(rng), R);
+    Cutter c = randomTeethCutter(n, rng);
+    const double R = c.radius;
+    const int flutes = c.teeth.flutes;
     const bool turns = n % 6 == 5;
     const double U = c.edgeLength(), rb = c.bottomRadius(), r = c.cornerRadius;
     for (int k = 0; k < flutes; ++k) {
@@ -74,21 +69,11 @@ TEST(ToothRake, RakedEdgesAgreeWithTheReference) {
           s.from = 0.2 * R + U * 0.5 * u(rng);
           s.to = s.from + (U - s.from) * (0.1 + 0.6 * u(rng));
       }
-      c.teeth.edgeSpans.push_back(s);
+      c.teeth.editEdgeSpans().push_back(s);
     }
-    if (n % 2) {
-      for (int k = 0; k < flutes; ++k) {
-        // A ball's edge may not move in (radial >= -(R - r) = 0, checkToothGeometry).
-        const double radial = type == CutterType::Ball ? 0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
-        const double axial = turns ? -0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
-        c.teeth.toothOffsets.push_back({radial, axial});
-      }
-    }
-    if (n % 4 == 3 && flutes > 1)
-      for (int k = 0; k < flutes; ++k)
-        c.teeth.toothAnglesDeg.push_back(k == 0 ? 0 : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
-    checkEdgeSpans(c.teeth.edgeSpans, flutes, U, "tool.tooth_edge_spans", true);
-    checkToothGeometry(c.teeth.toothAnglesDeg, c.teeth.toothOffsets, flutes, R, rb, "tool");
+    addRandomToothErrors(c, n, turns, rng);
+    checkEdgeSpans(c.teeth.edgeSpans(), flutes, U, "tool.tooth_edge_spans", true);
+    checkToothGeometry(c.teeth.toothAnglesDeg(), c.teeth.toothOffsets(), flutes, R, rb, "tool");
     giveRakes(c, 25, n % 4 == 0, rng);
     checkAgainstReference(c, n, turns, rng, &check);
   }
@@ -115,9 +100,9 @@ TEST(ToothRake, RakedGeneralCuttersAgreeWithTheReference) {
       EdgeSpan s;
       s.from = U * (0.05 + 0.4 * u(rng));
       s.to = s.from + (U - s.from) * (0.1 + 0.5 * u(rng));
-      c.teeth.edgeSpans.push_back(s);
+      c.teeth.editEdgeSpans().push_back(s);
     }
-    checkEdgeSpans(c.teeth.edgeSpans, flutes, U, "tool.tooth_edge_spans", true);
+    checkEdgeSpans(c.teeth.edgeSpans(), flutes, U, "tool.tooth_edge_spans", true);
     giveRakes(c, 20, n % 2 == 0, rng);
     checkAgainstReference(c, n, n % 5 == 4, rng, &check);
   }
@@ -168,7 +153,7 @@ TEST(ToothRake, RadialRakeThroughTheAxisTurnsTheTooth) {
     plain.teeth = CutterTeeth::make(2 + n % 2, 10 * (n % 2), 0, 0, 1);
     Cutter raked = plain;
     const double gr = 40 * (u(rng) - 0.5);
-    raked.teeth.toothRakes.assign(size_t(plain.teeth.flutes), ToothRake{0, gr});
+    raked.teeth.editToothRakes().assign(size_t(plain.teeth.flutes), ToothRake{0, gr});
     raked.checkRakes("tool.rake_deg");
     const double tilt = 0.4 * u(rng), az = 2 * kPi * u(rng);
     const Vec3 a0{std::sin(tilt) * std::cos(az), std::sin(tilt) * std::sin(az), std::cos(tilt)};

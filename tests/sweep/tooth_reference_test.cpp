@@ -177,10 +177,11 @@ struct Edges {
     e2 = m.counterClockwise ? cross(e1, a0) : cross(a0, e1);
     const int flutes = c.teeth.flutes;
     for (int k = 0; k < flutes; ++k) {
-      const bool pitch = !c.teeth.toothAnglesDeg.empty(), offsets = !c.teeth.toothOffsets.empty();
-      psi.push_back(pitch ? c.teeth.toothAnglesDeg[size_t(k)] * kPi / 180 : 2 * kPi * k / flutes);
-      dr.push_back(offsets ? c.teeth.toothOffsets[size_t(k)].radial : 0);
-      da.push_back(offsets ? c.teeth.toothOffsets[size_t(k)].axial : 0);
+      const bool pitch = !c.teeth.toothAnglesDeg().empty(),
+                 offsets = !c.teeth.toothOffsets().empty();
+      psi.push_back(pitch ? c.teeth.toothAnglesDeg()[size_t(k)] * kPi / 180 : 2 * kPi * k / flutes);
+      dr.push_back(offsets ? c.teeth.toothOffsets()[size_t(k)].radial : 0);
+      da.push_back(offsets ? c.teeth.toothOffsets()[size_t(k)].axial : 0);
       drMost = std::max(drMost, std::fabs(dr.back()));
       daMost = std::max(daMost, std::fabs(da.back()));
     }
@@ -197,9 +198,9 @@ struct Edges {
     psiR = c.teeth.runoutPhaseDeg * kPi / 180;
     U = edgeLength(c);
     for (int k = 0; k < flutes; ++k) {
-      const bool spans = !c.teeth.edgeSpans.empty();
-      uLo.push_back(spans ? c.teeth.edgeSpans[size_t(k)].from : 0);
-      uHi.push_back(spans ? c.teeth.edgeSpans[size_t(k)].to : U);
+      const bool spans = !c.teeth.edgeSpans().empty();
+      uLo.push_back(spans ? c.teeth.edgeSpans()[size_t(k)].from : 0);
+      uHi.push_back(spans ? c.teeth.edgeSpans()[size_t(k)].to : U);
       // Moved in (dr < 0), the edge ends at the axis: its flat bottom's points u < -dr
       // (radius u + dr < 0) would pass to the other side and are not edge (moved out, it
       // starts at radius dr: point() needs nothing more).
@@ -208,8 +209,9 @@ struct Edges {
     // |dP/du|: the meridian by arc length, and the turn of a point at radius at most
     // R + |dr|max: the helix's, and the rake's (Rake::turnBound).
     for (int k = 0; k < flutes; ++k) {
-      const ToothRake tr = c.teeth.toothRakes.empty() ? ToothRake{} : c.teeth.toothRakes[size_t(k)];
-      const double from = c.teeth.edgeSpans.empty() ? 0 : c.teeth.edgeSpans[size_t(k)].from;
+      const ToothRake tr =
+          c.teeth.toothRakes().empty() ? ToothRake{} : c.teeth.toothRakes()[size_t(k)];
+      const double from = c.teeth.edgeSpans().empty() ? 0 : c.teeth.edgeSpans()[size_t(k)].from;
       rake.push_back(Rake(tr, spot(from)));
       const double rhoMin = spot(uLo[size_t(k)]).rho;
       Lu.push_back(std::hypot(1.0, (c.radius + drMost) * slope +

@@ -84,14 +84,9 @@ TEST(ToothSpan, SpansAgreeWithTheReference) {
   const unsigned long long unprovenBefore = ToothSweep::unprovenSearches();
   ReferenceCheck check;
   for (int n = 0; n < 30; ++n) {
-    const CutterType type = n % 3 == 0   ? CutterType::Ball
-                            : n % 3 == 1 ? CutterType::Bull
-                                         : CutterType::Flat;
-    const double R = 1 + u(rng);
-    Cutter c = Cutter::make(type, R, 0.4 * R, 2 * R);
-    const int flutes = 1 + n % 3;
-    c.teeth = CutterTeeth::make(flutes, n % 4 == 2 ? 30 * u(rng) : 0, n % 5 == 1 ? 0.02 * R : 0,
-                                360 * u(rng), R);
+    Cutter c = randomTeethCutter(n, rng);
+    const double R = c.radius;
+    const int flutes = c.teeth.flutes;
     const bool turns = n % 6 == 5;
     const double U = c.edgeLength(), rb = c.bottomRadius(), r = c.cornerRadius;
     for (int k = 0; k < flutes; ++k) {
@@ -110,19 +105,10 @@ TEST(ToothSpan, SpansAgreeWithTheReference) {
         default:  // from the axis
           s = {0, rb + 0.5 * r + 0.2 * R};
       }
-      c.teeth.edgeSpans.push_back(s);
+      c.teeth.editEdgeSpans().push_back(s);
     }
-    if (n % 2) {
-      for (int k = 0; k < flutes; ++k) {
-        const double radial = type == CutterType::Ball ? 0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
-        const double axial = turns ? -0.01 * u(rng) : 0.02 * (u(rng) - 0.5);
-        c.teeth.toothOffsets.push_back({radial, axial});
-      }
-    }
-    if (n % 4 == 3 && flutes > 1)
-      for (int k = 0; k < flutes; ++k)
-        c.teeth.toothAnglesDeg.push_back(k == 0 ? 0 : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
-    checkEdgeSpans(c.teeth.edgeSpans, flutes, U, "tool.tooth_edge_spans", true);
+    addRandomToothErrors(c, n, turns, rng);
+    checkEdgeSpans(c.teeth.edgeSpans(), flutes, U, "tool.tooth_edge_spans", true);
     checkAgainstReference(c, n, turns, rng, &check);
   }
   std::printf("ToothSpan random: %d hits, %d misses, worst |kernel - reference| %.3g mm\n",
@@ -183,15 +169,16 @@ TEST(ToothSpan, GeneralCuttersSpansAgreeWithTheReference) {
       } else {
         s = {0, U * (0.1 + 0.4 * u(rng))};
       }
-      c.teeth.edgeSpans.push_back(s);
+      c.teeth.editEdgeSpans().push_back(s);
     }
     if (n % 2 && !turns)
       for (int k = 0; k < flutes; ++k)
-        c.teeth.toothOffsets.push_back({0.01 * R * u(rng), 0.01 * (u(rng) - 0.5)});
+        c.teeth.editToothOffsets().push_back({0.01 * R * u(rng), 0.01 * (u(rng) - 0.5)});
     if (n % 4 == 3 && flutes > 1)
       for (int k = 0; k < flutes; ++k)
-        c.teeth.toothAnglesDeg.push_back(k == 0 ? 0 : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
-    checkEdgeSpans(c.teeth.edgeSpans, flutes, U, "tool.tooth_edge_spans", true);
+        c.teeth.editToothAnglesDeg().push_back(k == 0 ? 0
+                                                      : 360.0 * k / flutes + 40 * (u(rng) - 0.5));
+    checkEdgeSpans(c.teeth.edgeSpans(), flutes, U, "tool.tooth_edge_spans", true);
     checkAgainstReference(c, n, turns, rng, &check);
   }
   std::printf("ToothSpan general: %d hits, %d misses, worst |kernel - reference| %.3g mm\n",
@@ -216,7 +203,7 @@ TEST(ToothSpan, RoundInsertFeedMarksAreTheSagitta) {
   Cutter insert = Cutter::make(CutterType::Bull, rb + ri, ri, 5);
   insert.teeth = CutterTeeth::make(2, 0, 0, 0, insert.radius);
   Cutter whole = insert;
-  insert.teeth.edgeSpans.assign(2, EdgeSpan{rb, rb + ri * kPi / 2});
+  insert.teeth.editEdgeSpans().assign(2, EdgeSpan{rb, rb + ri * kPi / 2});
   const Vec3 a{0, 0, 1}, p0{0, 0, 0}, p1{20, 0, 0};
   const SweptMove spanned = sweepOne(insert, p0, p1, a, a, teethModel(fz, 0));
   const SweptMove flat = sweepOne(whole, p0, p1, a, a, teethModel(fz, 0));

@@ -357,7 +357,7 @@ TEST(ToothSweep, ProfileCuttersAgreeWithTheReference) {
                                         teeth.runoutPhaseDeg, rc.cutter.radius);
     if (n % 4 == 1 && !turning(n)) {
       for (int k = 0; k < rc.cutter.teeth.flutes; ++k)
-        rc.cutter.teeth.toothOffsets.push_back(
+        rc.cutter.teeth.editToothOffsets().push_back(
             {k == 0 ? 0.0 : 0.03 * rc.cutter.radius * u(rng), k == 0 ? 0.0 : 0.02 * u(rng)});
       ++offsets;
     }

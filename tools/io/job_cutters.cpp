@@ -46,15 +46,15 @@ void parseEdgeSpans(const json& tool, const std::string& f, Cutter& cutter) {
     const std::string field = f + ".edge_span";
     const EdgeSpan span = spanPair(tool.at("edge_span"), field);
     checkEdgeSpans({span}, teeth.flutes, cutter.edgeLength(), field, false);
-    teeth.edgeSpans.assign(size_t(teeth.flutes), span);
+    teeth.editEdgeSpans().assign(size_t(teeth.flutes), span);
   } else if (each) {
     const std::string field = f + ".tooth_edge_spans";
     const json& a = tool.at("tooth_edge_spans");
     if (!a.is_array())
       throw InputError(field, "expected an array of [from_mm, to_mm] pairs, one per flute");
     for (size_t k = 0; k < a.size(); ++k)
-      teeth.edgeSpans.push_back(spanPair(a[k], field + "[" + std::to_string(k) + "]"));
-    checkEdgeSpans(teeth.edgeSpans, teeth.flutes, cutter.edgeLength(), field, true);
+      teeth.editEdgeSpans().push_back(spanPair(a[k], field + "[" + std::to_string(k) + "]"));
+    checkEdgeSpans(teeth.edgeSpans(), teeth.flutes, cutter.edgeLength(), field, true);
   }
 }
 
@@ -80,15 +80,15 @@ void parseRakes(const json& tool, const std::string& f, Cutter& cutter) {
     field = f + ".rake_deg";
     const ToothRake rake = rakePair(tool.at("rake_deg"), field);
     checkToothRakes({rake}, teeth.flutes, field, false);
-    teeth.toothRakes.assign(size_t(teeth.flutes), rake);
+    teeth.editToothRakes().assign(size_t(teeth.flutes), rake);
   } else if (each) {
     field = f + ".tooth_rakes_deg";
     const json& a = tool.at("tooth_rakes_deg");
     if (!a.is_array())
       throw InputError(field, "expected an array of [axial_deg, radial_deg] pairs, one per flute");
     for (size_t k = 0; k < a.size(); ++k)
-      teeth.toothRakes.push_back(rakePair(a[k], field + "[" + std::to_string(k) + "]"));
-    checkToothRakes(teeth.toothRakes, teeth.flutes, field, true);
+      teeth.editToothRakes().push_back(rakePair(a[k], field + "[" + std::to_string(k) + "]"));
+    checkToothRakes(teeth.toothRakes(), teeth.flutes, field, true);
   }
   if (one || each) cutter.checkRakes(field);
 }
@@ -103,7 +103,7 @@ void parseToothGeometry(const json& tool, const std::string& f, Cutter& cutter) 
     if (!a.is_array())
       throw InputError(field, "expected an array of body angles in degrees, one per flute");
     for (size_t k = 0; k < a.size(); ++k)
-      teeth.toothAnglesDeg.push_back(
+      teeth.editToothAnglesDeg().push_back(
           arrayNumber(a[k], field + "[" + std::to_string(k) + "]", "a body angle in degrees"));
   }
   if (tool.contains("tooth_offsets")) {
@@ -116,12 +116,13 @@ void parseToothGeometry(const json& tool, const std::string& f, Cutter& cutter) 
       const std::string entry = field + "[" + std::to_string(k) + "]";
       if (!a[k].is_array() || a[k].size() != 2)
         throw InputError(entry, std::string("expected ") + pair + ", got " + a[k].dump());
-      teeth.toothOffsets.push_back({arrayNumber(a[k][0], entry + "[0]", "a radial offset in mm"),
-                                    arrayNumber(a[k][1], entry + "[1]", "an axial offset in mm")});
+      teeth.editToothOffsets().push_back(
+          {arrayNumber(a[k][0], entry + "[0]", "a radial offset in mm"),
+           arrayNumber(a[k][1], entry + "[1]", "an axial offset in mm")});
     }
   }
   // A general cutter's flat bottom is its profile's (its cornerRadius is 0).
-  checkToothGeometry(teeth.toothAnglesDeg, teeth.toothOffsets, teeth.flutes, cutter.radius,
+  checkToothGeometry(teeth.toothAnglesDeg(), teeth.toothOffsets(), teeth.flutes, cutter.radius,
                      cutter.general() ? cutter.profile->bottomRadius() : cutter.bottomRadius(), f);
   parseEdgeSpans(tool, f, cutter);
   parseRakes(tool, f, cutter);
@@ -231,13 +232,13 @@ json cutterToJson(const Cutter& c) {
             {"corner_radius", c.cornerRadius}, {"flute_length", c.fluteLength},
             {"flutes", c.teeth.flutes},        {"helix_deg", c.teeth.helixDeg},
             {"runout_mm", c.teeth.runout},     {"runout_phase_deg", c.teeth.runoutPhaseDeg}};
-  if (!c.teeth.toothAnglesDeg.empty()) j["tooth_angles_deg"] = c.teeth.toothAnglesDeg;
-  if (!c.teeth.toothOffsets.empty()) {
+  if (!c.teeth.toothAnglesDeg().empty()) j["tooth_angles_deg"] = c.teeth.toothAnglesDeg();
+  if (!c.teeth.toothOffsets().empty()) {
     json offsets = json::array();
-    for (const ToothOffset& o : c.teeth.toothOffsets) offsets.push_back({o.radial, o.axial});
+    for (const ToothOffset& o : c.teeth.toothOffsets()) offsets.push_back({o.radial, o.axial});
     j["tooth_offsets"] = offsets;
   }
-  const std::vector<EdgeSpan>& spans = c.teeth.edgeSpans;
+  const std::vector<EdgeSpan>& spans = c.teeth.edgeSpans();
   if (!spans.empty()) {
     if (std::all_of(spans.begin(), spans.end(), [&](const EdgeSpan& e) { return e == spans[0]; })) {
       j["edge_span"] = {spans[0].from, spans[0].to};
@@ -247,7 +248,7 @@ json cutterToJson(const Cutter& c) {
       j["tooth_edge_spans"] = each;
     }
   }
-  const std::vector<ToothRake>& rakes = c.teeth.toothRakes;
+  const std::vector<ToothRake>& rakes = c.teeth.toothRakes();
   if (!rakes.empty()) {
     if (std::all_of(rakes.begin(), rakes.end(),
                     [&](const ToothRake& r) { return r == rakes[0]; })) {

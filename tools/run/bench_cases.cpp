@@ -205,8 +205,8 @@ void b8FaceMill(BenchCase& b, double side, double coarse) {
   const double ri = 5, rb = 5;
   b.cutter = Cutter::make(CutterType::Bull, rb + ri, ri, 6);
   b.cutter.teeth = CutterTeeth::make(2, 0, 0, 0, b.cutter.radius);
-  b.cutter.teeth.edgeSpans.assign(2, EdgeSpan{rb, rb + ri * kPi / 2});
-  b.cutter.teeth.toothOffsets = {{0, 0}, {-0.026, -0.009}};
+  b.cutter.teeth.editEdgeSpans().assign(2, EdgeSpan{rb, rb + ri * kPi / 2});
+  b.cutter.teeth.editToothOffsets() = {{0, 0}, {-0.026, -0.009}};
   b.stock.extend({0, 0, -2});
   b.stock.extend({side, side, 0});
   const Vec3 axis{0, 0, 1};

@@ -144,10 +144,10 @@ TEST(TeethJob, ToothGeometryAndSpindleAreReadEchoedAndChecked) {
       "path": {"file": "p.nc"})";
   const Job job = parseJob("{" + tool + ", " + rest + R"(, "spindle": "ccw"})", "job.json");
   const CutterTeeth& t = job.cutter.teeth;
-  EXPECT_EQ(t.toothAnglesDeg, (std::vector<double>{0, 170}));
-  ASSERT_EQ(t.toothOffsets.size(), 2u);
-  EXPECT_EQ(t.toothOffsets[0].radial, -0.026);
-  EXPECT_EQ(t.toothOffsets[0].axial, 0.003);
+  EXPECT_EQ(t.toothAnglesDeg(), (std::vector<double>{0, 170}));
+  ASSERT_EQ(t.toothOffsets().size(), 2u);
+  EXPECT_EQ(t.toothOffsets()[0].radial, -0.026);
+  EXPECT_EQ(t.toothOffsets()[0].axial, 0.003);
   EXPECT_TRUE(job.cutting.counterClockwise);
   const json echo = jobToJson(job);
   EXPECT_EQ(echo["tool"]["tooth_offsets"], json::parse("[[-0.026, 0.003], [0.011, 0]]"));
@@ -192,16 +192,17 @@ TEST(TeethJob, EdgeSpansAreReadEchoedAndChecked) {
            keys + "}, ";
   };
   const Job one = parseJob(tool(R"("edge_span": [5, 12.85])") + rest + "}", "job.json");
-  ASSERT_EQ(one.cutter.teeth.edgeSpans.size(), 2u);
-  EXPECT_EQ(one.cutter.teeth.edgeSpans[1].from, 5);
-  EXPECT_EQ(one.cutter.teeth.edgeSpans[1].to, 12.85);
+  ASSERT_EQ(one.cutter.teeth.edgeSpans().size(), 2u);
+  EXPECT_EQ(one.cutter.teeth.edgeSpans()[1].from, 5);
+  EXPECT_EQ(one.cutter.teeth.edgeSpans()[1].to, 12.85);
   EXPECT_EQ(jobToJson(one)["tool"]["edge_span"], json::parse("[5, 12.85]"));
   const Job each =
       parseJob(tool(R"("tooth_edge_spans": [[5, 12.85], [0, 15]])") + rest + "}", "job.json");
-  EXPECT_EQ(each.cutter.teeth.edgeSpans[1].to, 15);
+  EXPECT_EQ(each.cutter.teeth.edgeSpans()[1].to, 15);
   EXPECT_EQ(jobToJson(each)["tool"]["tooth_edge_spans"], json::parse("[[5, 12.85], [0, 15]]"));
-  EXPECT_TRUE(
-      parseJob(tool(R"("helix_deg": 0)") + rest + "}", "job.json").cutter.teeth.edgeSpans.empty());
+  EXPECT_TRUE(parseJob(tool(R"("helix_deg": 0)") + rest + "}", "job.json")
+                  .cutter.teeth.edgeSpans()
+                  .empty());
   // The whole edge: Rb + r pi / 2 + L - r = 5 + 7.853981... + 3.
   auto refused = [&](const std::string& keys, const std::string& field) {
     expectRejected([&] { parseJob(tool(keys) + rest + "}", "job.json"); }, field);
@@ -231,9 +232,9 @@ TEST(TeethJob, RakesAreReadEchoedAndChecked) {
            keys + "}, ";
   };
   const Job one = parseJob(tool(R"("rake_deg": [6, -4])") + rest + "}", "job.json");
-  ASSERT_EQ(one.cutter.teeth.toothRakes.size(), 2u);
-  EXPECT_EQ(one.cutter.teeth.toothRakes[1].axialDeg, 6);
-  EXPECT_EQ(one.cutter.teeth.toothRakes[1].radialDeg, -4);
+  ASSERT_EQ(one.cutter.teeth.toothRakes().size(), 2u);
+  EXPECT_EQ(one.cutter.teeth.toothRakes()[1].axialDeg, 6);
+  EXPECT_EQ(one.cutter.teeth.toothRakes()[1].radialDeg, -4);
   EXPECT_EQ(jobToJson(one)["tool"]["rake_deg"], json::parse("[6, -4]"));
   const Job each =
       parseJob(tool(R"("tooth_rakes_deg": [[6, -4], [0, 0]])") + rest + "}", "job.json");

@@ -156,8 +156,8 @@ TEST_F(FeedMarksReport, APassOfAPathMeetsTheClosedFormWithToothErrors) {
   const json& predicted = pass["predicted"];
   Cutter ball = Cutter::make(CutterType::Ball, 3);
   ball.teeth = CutterTeeth::make(3, 30, 0.001, 60, 3);
-  ball.teeth.toothAnglesDeg = {0, 100, 230};
-  ball.teeth.toothOffsets = {{0, 0}, {0, 0.0004}, {0.0015, 0}};
+  ball.teeth.editToothAnglesDeg() = {0, 100, 230};
+  ball.teeth.editToothOffsets() = {{0, 0}, {0, 0.0004}, {0.0015, 0}};
   const double fz = 1200.0 / (6000 * 3);
   const FeedMarkPrediction p = predictFeedMarks(ball, 15, 0, fz);
   ASSERT_TRUE(p.applicable) << p.reason;
