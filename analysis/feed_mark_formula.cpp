@@ -116,9 +116,8 @@ FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double
         "needs a lead 0 < |lead| < 90 deg: without one the contact is at the tip, "
         "on the axis, where every tooth passes");
   if (tiltDeg != 0) return notCovered("derived for lead alone (tilt 0)");
-  if (!cutter.teeth.toothRakes().empty() &&
-      std::any_of(cutter.teeth.toothRakes().begin(), cutter.teeth.toothRakes().end(),
-                  [](const ToothRake& r) { return !r.zero(); }))
+  const std::vector<ToothRake>& rakes = cutter.teeth.toothRakes();
+  if (std::any_of(rakes.begin(), rakes.end(), [](const ToothRake& r) { return !r.zero(); }))
     return notCovered(
         "a raked edge lies off the meridian plane: its points reach the contact at "
         "different spindle angles, so its marks are sheared arcs (not derived here)");

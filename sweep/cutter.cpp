@@ -188,14 +188,8 @@ void Cutter::edgeSpot(double u, double* rho, double* h) const {
     *rho = p.rho, *h = p.s;
     return;
   }
-  const double rb = bottomRadius(), r = cornerRadius;
-  *rho = profileRadiusAt(rb, r, u);
-  if (u <= rb)
-    *h = 0;
-  else if (u < rb + r * kPi / 2)
-    *h = r * (1 - std::cos((u - rb) / r));
-  else
-    *h = r + (u - rb - r * kPi / 2);
+  *rho = profileRadiusAt(bottomRadius(), cornerRadius, u);
+  *h = profileHeightAt(bottomRadius(), cornerRadius, u);
 }
 
 RakeLag Cutter::rakeLag(int k) const {

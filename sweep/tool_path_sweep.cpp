@@ -62,13 +62,9 @@ bool continues(const Planned& a, const Cutter& c, const Vec3& bStart, const Vec3
   const CutterTeeth &ta = c.teeth, &tb = cutter.teeth;
   if (ta.flutes != tb.flutes || ta.helixDeg != tb.helixDeg || ta.runout != tb.runout ||
       ta.runoutPhaseDeg != tb.runoutPhaseDeg || ta.toothAnglesDeg() != tb.toothAnglesDeg() ||
-      ta.edgeSpans() != tb.edgeSpans() || ta.toothRakes() != tb.toothRakes())
+      ta.edgeSpans() != tb.edgeSpans() || ta.toothRakes() != tb.toothRakes() ||
+      ta.toothOffsets() != tb.toothOffsets())
     return false;
-  if (ta.toothOffsets().size() != tb.toothOffsets().size()) return false;
-  for (size_t k = 0; k < ta.toothOffsets().size(); ++k)
-    if (ta.toothOffsets()[k].radial != tb.toothOffsets()[k].radial ||
-        ta.toothOffsets()[k].axial != tb.toothOffsets()[k].axial)
-      return false;
   const Vec3 da = a.to - a.from, db = bEnd - bStart;
   const double la = length(da), lb = length(db);
   if (la == 0 || lb == 0) return la == 0 && lb == 0 ? false : true;

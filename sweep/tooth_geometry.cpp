@@ -109,6 +109,13 @@ double profileRadiusAt(double bottomRadius, double cornerRadius, double u) {
   return rb + r;
 }
 
+double profileHeightAt(double bottomRadius, double cornerRadius, double u) {
+  const double rb = bottomRadius, r = cornerRadius;
+  if (u <= rb) return 0;
+  if (u < rb + r * kPi / 2) return r * (1 - std::cos((u - rb) / r));
+  return r + (u - rb - r * kPi / 2);
+}
+
 void checkEdgeSpans(const std::vector<EdgeSpan>& spans, int flutes, double edgeLength,
                     const std::string& field, bool perTooth) {
   if (spans.empty()) return;

@@ -18,6 +18,8 @@ namespace scallop {
 struct ToothOffset {
   double radial = 0;  // mm
   double axial = 0;   // mm
+  bool operator==(const ToothOffset& o) const { return radial == o.radial && axial == o.axial; }
+  bool operator!=(const ToothOffset& o) const { return !(*this == o); }
 };
 
 // Tooth k's edge covers the meridian profile only between these arc lengths, mm,
@@ -92,6 +94,8 @@ double profileArcLength(double bottomRadius, double cornerRadius, double h, doub
 // The radius from the axis of that profile's point at arc length u (its inverse's
 // radius), mm: non-decreasing in u.
 double profileRadiusAt(double bottomRadius, double cornerRadius, double u);
+// And its height above the tip, mm.
+double profileHeightAt(double bottomRadius, double cornerRadius, double u);
 
 // Validates the tool key "edge_span" (one span for every tooth) or "tooth_edge_spans"
 // (one per flute): each within [0, edgeLength] (the profile's whole arc length), from <

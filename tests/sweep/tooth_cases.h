@@ -76,15 +76,16 @@ inline void checkAgainstReference(const Cutter& c, int n, bool turns, std::mt199
   }
 }
 
-// Random cutter n of the teeth tests: a ball, bull or flat cutter (n % 3) of radius 1-2
-// mm, 1 + n % 3 flutes, a helix when n % 4 == 2, runout when n % 5 == 1.
+// Random cutter n of the teeth tests: a ball, bull or flat cutter (n % 3, teethCaseType) of radius
+// 1-2 mm, 1 + n % 3 flutes, a helix when n % 4 == 2, runout when n % 5 == 1.
+inline CutterType teethCaseType(int n) {
+  return n % 3 == 0 ? CutterType::Ball : n % 3 == 1 ? CutterType::Bull : CutterType::Flat;
+}
+
 inline Cutter randomTeethCutter(int n, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
-  const CutterType type = n % 3 == 0   ? CutterType::Ball
-                          : n % 3 == 1 ? CutterType::Bull
-                                       : CutterType::Flat;
   const double R = 1 + u(rng);
-  Cutter c = Cutter::make(type, R, 0.4 * R, 2 * R);
+  Cutter c = Cutter::make(teethCaseType(n), R, 0.4 * R, 2 * R);
   const int flutes = 1 + n % 3;
   c.teeth = CutterTeeth::make(flutes, n % 4 == 2 ? 30 * u(rng) : 0, n % 5 == 1 ? 0.02 * R : 0,
                               360 * u(rng), R);

@@ -146,10 +146,7 @@ TEST(ToothRake, RadialRakeThroughTheAxisTurnsTheTooth) {
   double worst = 0;
   int hits = 0;
   for (int n = 0; n < 9; ++n) {
-    const CutterType type = n % 3 == 0   ? CutterType::Ball
-                            : n % 3 == 1 ? CutterType::Bull
-                                         : CutterType::Flat;
-    Cutter plain = Cutter::make(type, 1, 0.3, 3);
+    Cutter plain = Cutter::make(teethCaseType(n), 1, 0.3, 3);
     plain.teeth = CutterTeeth::make(2 + n % 2, 10 * (n % 2), 0, 0, 1);
     Cutter raked = plain;
     const double gr = 40 * (u(rng) - 0.5);

@@ -180,17 +180,22 @@ TEST(TeethJob, ToothGeometryAndSpindleAreReadEchoedAndChecked) {
   refused(R"("helix_deg": 0)", "spindle", R"(, "spindle": 3)");
 }
 
+// The edge-span and rake tests' job: a face mill (bull R 10, r 5, two flutes) with `keys`
+// on its tool (faceMillTool), then the rest of the job (kFaceMillRest).
+const char* const kFaceMillRest = R"("cutting": {"model": "teeth", "feed_per_tooth": 0.4},
+      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
+      "path": {"file": "p.nc"})";
+std::string faceMillTool(const std::string& keys) {
+  return R"({"tool": {"type": "bull", "radius": 10, "corner_radius": 5, "flute_length": 8,
+        "flutes": 2, )" +
+         keys + "}, ";
+}
+
 // Edge spans: "edge_span" for every tooth, "tooth_edge_spans" one per flute, echoed as
 // given (one span when all are equal); every wrong shape or value names its field.
 TEST(TeethJob, EdgeSpansAreReadEchoedAndChecked) {
-  const std::string rest = R"("cutting": {"model": "teeth", "feed_per_tooth": 0.4},
-      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
-      "path": {"file": "p.nc"})";
-  auto tool = [](const std::string& keys) {
-    return R"({"tool": {"type": "bull", "radius": 10, "corner_radius": 5, "flute_length": 8,
-        "flutes": 2, )" +
-           keys + "}, ";
-  };
+  const std::string rest = kFaceMillRest;
+  auto tool = [](const std::string& keys) { return faceMillTool(keys); };
   const Job one = parseJob(tool(R"("edge_span": [5, 12.85])") + rest + "}", "job.json");
   ASSERT_EQ(one.cutter.teeth.edgeSpans().size(), 2u);
   EXPECT_EQ(one.cutter.teeth.edgeSpans()[1].from, 5);
@@ -223,13 +228,9 @@ TEST(TeethJob, EdgeSpansAreReadEchoedAndChecked) {
 // an angle out of range, a wrong shape, both keys, or a face that leaves the cutter's
 // surface on the edge's span names its field (and the tooth and height).
 TEST(TeethJob, RakesAreReadEchoedAndChecked) {
-  const std::string rest = R"("cutting": {"model": "teeth", "feed_per_tooth": 0.4},
-      "stock": {"min": [0, 0, -2], "max": [4, 4, 0]}, "grid": {"spacing": 0.1},
-      "path": {"file": "p.nc"})";
+  const std::string rest = kFaceMillRest;
   auto tool = [](const std::string& keys) {
-    return R"({"tool": {"type": "bull", "radius": 10, "corner_radius": 5, "flute_length": 8,
-        "flutes": 2, "edge_span": [5, 12.85], )" +
-           keys + "}, ";
+    return faceMillTool(R"("edge_span": [5, 12.85], )" + keys);
   };
   const Job one = parseJob(tool(R"("rake_deg": [6, -4])") + rest + "}", "job.json");
   ASSERT_EQ(one.cutter.teeth.toothRakes().size(), 2u);
