@@ -29,6 +29,23 @@ void requireConsistentOrientation(const TriangleMesh& mesh, const std::string& w
       throw InputError(where, text.str());
     }
   }
+  // A closed surface (every edge run both ways) encloses a volume, whose sign tells its
+  // outside: the divergence theorem gives 6 V = sum of a . (b x c) over the facets,
+  // positive when they face outwards. Facets that all face inwards would put every
+  // vertex normal into the part, where no tool comes from.
+  for (const auto& entry : runBy)
+    if (!runBy.count(entry.first << 32 | entry.first >> 32)) return;  // open: no inside
+  double sixVolume = 0;
+  for (const auto& f : mesh.triangles)
+    sixVolume += dot(mesh.vertices[f[0]], cross(mesh.vertices[f[1]], mesh.vertices[f[2]]));
+  if (sixVolume < 0) {
+    std::ostringstream text;
+    text.precision(6);
+    text << "the facets of this closed surface all face inwards (its signed volume is "
+         << sixVolume / 6 << " mm^3): list each facet's corners the other way round "
+                             "(counter-clockwise seen from outside)";
+    throw InputError(where, text.str());
+  }
 }
 
 std::vector<Vec3> areaWeightedVertexNormals(const TriangleMesh& mesh) {

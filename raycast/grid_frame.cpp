@@ -135,7 +135,8 @@ FrameCellCounts finishFrameMap(ZMap& map, const GridFrame& frame) {
     if (h == kNoMaterial) {
       h = NAN;
       ++counts.voidCells;
-    } else if (h < -frame.depth) {
+    } else if (h <= -frame.depth) {
+      // cutToFrameDepth (frame_depth.h) left such a cell at -depth exactly.
       h = -frame.depth;
       ++counts.cutThroughCells;
     }

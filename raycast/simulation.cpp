@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raycast/frame_depth.h"
 #include "raycast/tile_grid.h"
 #include "sweep/contact_knots.h"
 #include "sweep/tip_ball.h"
@@ -202,7 +203,10 @@ SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3
   if (options.fillStock) options.fillStock(result.map);
   phaseDone();
   result.cast = castZMap(*scene, result.map, options.cast);
-  if (options.frame) result.frameCells = finishFrameMap(result.map, *options.frame);
+  if (options.frame) {
+    cutToFrameDepth(*scene, result.map, stock, *options.frame);
+    result.frameCells = finishFrameMap(result.map, *options.frame);
+  }
   if (options.fillStock) result.frameCells = finishStockMap(result.map);
   result.scene = scene->stats();
   return result;

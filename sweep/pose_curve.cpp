@@ -187,6 +187,21 @@ PoseCurve PoseCurve::arc(const ArcMotion& arc, const Vec3& axis) {
   return c;
 }
 
+bool PoseCurve::mirroredZ(PoseCurve* out) const {
+  auto flip = [](const Vec3& p) { return Vec3{p.x, p.y, -p.z}; };
+  if (kind_ == Kind::Slerp) {
+    *out = linear({flip(tip0_), flip(u_)}, {flip(tip1_), flip(a1_)});
+    return true;
+  }
+  if (kind_ != Kind::Arc) return false;
+  // The circle's u and v reflect; n = u x v then turns the other way (a reflection is
+  // improper), so the rise along it changes sign.
+  ArcMotion arc = arc_->motion;
+  arc.centre = flip(arc.centre), arc.u = flip(arc.u), arc.v = flip(arc.v), arc.rise = -arc.rise;
+  *out = PoseCurve::arc(arc, flip(u_));
+  return true;
+}
+
 PoseCurve PoseCurve::ofMove(const ToolPath& path, const Move& move, const char* where) {
   if (move.arc > 0) return arc(path.arcs.at(move.arc - 1), move.from.axis);
   if (move.rotary == 0) return linear(move.from, move.to, where);

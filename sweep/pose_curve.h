@@ -89,6 +89,11 @@ class PoseCurve {
   // The curve of `move` of `path`: its machine motion when it has one (Move::rotary),
   // its arc (Move::arc), otherwise linear(move.from, move.to, where).
   static PoseCurve ofMove(const ToolPath& path, const Move& move, const char* where = "path move");
+  // The same motion reflected through the plane z = 0 (every pose's z negated), for the
+  // slerp and arc kinds: the highest point of this curve's swept solid on a vertical line
+  // is minus the lowest point of the mirror's. False for the machines' kinds, whose poses
+  // are machine angles.
+  bool mirroredZ(PoseCurve* out) const;
 
   Vec3 tip(double t) const {
     if (t >= 1) return tip1_;

@@ -414,15 +414,25 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
   // With g = Pm / sqrt(Q) = e . m, the support points of supportWithSlope give
   //   top rim (v . a > 0):  f = L ma + R g - c
   //   torus   (v . a <= 0): f = r ma + Rb g + r 2t / (1 + t^2) - c.
-  // Near an axial direction (Q -> 0) the vector form is used instead.
+  // Near an axial direction the vector form is used instead: Q is a sum of terms of order
+  // one that cancel to |v_perp|^2, so its round-off (~1e-16) makes g wrong by ~1e-16 / Q,
+  // times the rim's radius (7e-5 mm at Q = 1e-12: a bull moving almost in its bottom
+  // plane was 1e-6 mm too high), while the vector form's e = v_perp / |v_perp| keeps the
+  // point on the rim whatever its error. Below |v_perp| = 1e-2 |v| (Q = 1e-4 (1 + t^2)^2)
+  // the closed form's error stays below 1e-12 Rb. Only rims of a radius need it: a
+  // ball's torus term (Rb = 0) has none.
   const double r = cutter_.cornerRadius, L = cutter_.fluteLength, R = cutter_.radius;
   const double Rb = cutter_.bottomRadius();
   const double na = dot(n, axis_), ma = dot(m, axis_);
   const double A = 1 - na * na, B = -na * ma, C = 1 - ma * ma;
+  auto closedForm = [&](double t, double u, double Q) {
+    const double w = 1 + t * t;
+    return Q > 1e-20 && (Q > 1e-4 * w * w || (Rb == 0 && !(u * na + 2 * t * ma > 0)));
+  };
   auto offsetAndSlope = [&](double t, double& f, double& slope) {
     const double u = 1 - t * t;
     const double Q = u * u * A + 4 * t * u * B + 4 * t * t * C;
-    if (Q > 1e-20) {
+    if (closedForm(t, u, Q)) {
       const double Pm = u * B + 2 * t * C, dPm = -2 * t * B + 2 * C;
       const double dQ = -4 * t * u * A + (4 - 12 * t * t) * B + 8 * t * C;
       const double sq = std::sqrt(Q);
@@ -447,7 +457,8 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
   auto supportAt = [&](double t) {
     const double u = 1 - t * t;
     const Vec3 v = direction(t);
-    if (u * u * A + 4 * t * u * B + 4 * t * t * C <= 1e-20) return cutterSupport(cutter_, axis_, v);
+    if (!closedForm(t, u, u * u * A + 4 * t * u * B + 4 * t * t * C))
+      return cutterSupport(cutter_, axis_, v);
     const Vec3 e = normalize(v - axis_ * dot(v, axis_));
     return rimOrTorusPoint(cutter_, axis_, e, v, r / (1 + t * t), u * na + 2 * t * ma > 0);
   };
@@ -489,11 +500,18 @@ SweptSegment::Section SweptSegment::search(double c, double th1, Vec3 x1, double
   }
   // The bracket closed on a jump of the support point: a flat face (the bottom disk,
   // the top disk or a side line). The chord between the two bracketing support points
-  // lies on that face, which is the support set, and crosses P.
+  // lies on that face, which is the support set, and crosses P. The same happens where
+  // the support point only moves too fast for t's resolution: a direction within ~1e-5
+  // of the axis, whose rim point turns through half a circle while t changes by ~1e-5
+  // (a flat end mill moving almost in its bottom plane: d . a ~ 1e-6 |d|). The points
+  // at the two ends of a one-ulp bracket then lie on the same side of P by round-off,
+  // and the chord's crossing would be an extrapolation far off K (0.11 mm below it, seen
+  // on LinuxCNC's boat program). Kept on the chord, the point is a point of K within
+  // the bracket's spread of the true one (1e-10 mm there).
   if (th1 != thStart1) x1 = supportAt(th1);
   if (th2 != thStart2) x2 = supportAt(th2);
   const double f1 = dot(x1, m) - c, f2 = dot(x2, m) - c;
-  const double lam = f2 > f1 ? -f1 / (f2 - f1) : 0.0;
+  const double lam = f2 > f1 ? std::clamp(-f1 / (f2 - f1), 0.0, 1.0) : (f1 >= 0 ? 0.0 : 1.0);
   out.hit = true;
   out.point = x1 + (x2 - x1) * lam;
   out.normal = normalize(direction(0.5 * (th1 + th2)));

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "analysis/deviation_areas.h"
@@ -116,6 +117,19 @@ nlohmann::json normalDeviationReport(const Job& job, const std::string& outDir, 
         (std::filesystem::path(outDir) / "deviation_view.png").string(),
         "normal deviation of " + std::filesystem::path(job.designFile).filename().string());
     r["picture"] = "deviation_view.png";
+  }
+  // An open surface has no inside to check its facets against (vertex_normals.h): if the
+  // tool reached vertex lines only from behind their normals, say so rather than write
+  // a mesh of NaN in silence.
+  if (d.unresolved > 0 && !r.contains("min_mm")) {
+    const std::string warning =
+        job.designFile + ": no vertex of the design has a deviation: at all " +
+        std::to_string(d.unresolved) +
+        " vertices the moves that reach the normal's line come from behind it (the axis "
+        "points away from the normal); do the facets face inwards? List each facet's "
+        "corners counter-clockwise seen from outside, where the tool is";
+    r["warning"] = warning;
+    std::fprintf(stderr, "scallop: warning: %s\n", warning.c_str());
   }
   if (!quiet) {
     std::fprintf(stderr, "design: normal deviation at %zu vertices", job.design->vertices.size());

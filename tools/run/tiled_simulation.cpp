@@ -16,6 +16,7 @@
 
 #include "base/input_error.h"
 #include "base/version.h"
+#include "raycast/frame_depth.h"
 #include "raycast/simulation.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/job.h"
@@ -201,7 +202,10 @@ RunOutcome runTiledSimulation(Job job, const SimulationPlan& plan, const RunSett
     if (job.shapedStock()) job.fillStockHeights(band);
     const CastStats cast = castZMap(*scene, band, options.cast);
     FrameCellCounts frameCells;
-    if (job.frame) frameCells = finishFrameMap(band, *job.frame);
+    if (job.frame) {
+      cutToFrameDepth(*scene, band, job.stock, *job.frame);
+      frameCells = finishFrameMap(band, *job.frame);
+    }
     if (job.shapedStock()) frameCells = finishStockMap(band);
     doneCells += band.grid().cells();
     json stats = {{"rows", {layout.firstRow(b), layout.endRow(b, grid)}},
