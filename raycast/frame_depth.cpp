@@ -29,7 +29,7 @@ double heightAboveFloor(const SweptScene& scene, double x, double y, double exit
     if (low.z >= floor) {
       best = low.z;
     } else if (highestPoint(move, x, y) >= floor) {
-      return floor;  // nothing on the kept part of the line is lower
+      return low.z;  // cut through: finishFrameMap clamps it to -depth and counts it
     }
   }
   return best;
@@ -49,6 +49,7 @@ int64_t cutToFrameDepth(const SweptScene& scene, ZMap& map, const Box3& stock,
       if (h == kNoMaterial || !(h < floor)) continue;
       const double x = g.cellCentreX(i), y = g.cellCentreY(j);
       const double exit = stockExitHeight(stock, frame, x, y);
+      // The lowest point at or above -depth, or (cut through) one below it.
       const double kept = heightAboveFloor(scene, x, y, exit, floor);
       if (kept != h) changed.fetch_add(1, std::memory_order_relaxed);
       h = kept;

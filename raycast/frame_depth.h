@@ -15,7 +15,7 @@ namespace scallop {
 
 // For every cell of `map` (cast from `scene`, frame coordinates) below -frame.depth: the
 // lowest point at or above -depth of every move that can reach its line, or its stock
-// exit height. A move whose lowest point lies below -depth cuts the cell down to -depth
+// exit height, or (cut through) a point below -depth that finishFrameMap then clamps. A move whose lowest point lies below -depth cuts the cell down to -depth
 // when its solid still holds the line's point at -depth: for a constant-axis move (a
 // convex solid, whose trace on the line is one interval) when its highest point on the
 // line, minus the lowest point of its mirror image through w = 0, is at or above -depth;

@@ -135,8 +135,8 @@ FrameCellCounts finishFrameMap(ZMap& map, const GridFrame& frame) {
     if (h == kNoMaterial) {
       h = NAN;
       ++counts.voidCells;
-    } else if (h <= -frame.depth) {
-      // cutToFrameDepth (frame_depth.h) left such a cell at -depth exactly.
+    } else if (h < -frame.depth) {
+      // Cut through: cutToFrameDepth (frame_depth.h) kept only such cells below -depth.
       h = -frame.depth;
       ++counts.cutThroughCells;
     }

@@ -1,6 +1,7 @@
 #include "raycast/zmap_caster.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -121,8 +122,15 @@ CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& option
   const int64_t tileCells = options.tileCells > 0             ? options.tileCells
                             : g.cells() >= (int64_t(1) << 22) ? 128
                                                               : 64;
+  std::atomic<uint64_t> unproven{0};
   stats.exactEvaluations = forEachCellTile(
       g, tileCells, options.progress, [&](int64_t i0, int64_t i1, int64_t j0, int64_t j1) {
+        const unsigned long long unprovenBefore = SweptMove::unprovenSearchesOnThisThread();
+        struct CountUnproven {
+          std::atomic<uint64_t>& total;
+          unsigned long long before;
+          ~CountUnproven() { total += SweptMove::unprovenSearchesOnThisThread() - before; }
+        } countUnproven{unproven, unprovenBefore};
         uint64_t evals = 0;
         SweptScene::QueryCache cache;
         thread_local std::vector<SweptScene::Candidate> candidates;
@@ -145,6 +153,7 @@ CastStats castZMap(const SweptScene& scene, ZMap& map, const CastOptions& option
         return evals;
       });
   stats.cells = g.cells();
+  stats.unprovenSearches = unproven.load();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return stats;
 }

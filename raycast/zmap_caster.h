@@ -30,6 +30,10 @@ struct CastOptions {
 struct CastStats {
   int64_t cells = 0;
   uint64_t exactEvaluations = 0;
+  // Cells whose turning move's certified search ran out of samples before its proof
+  // closed (sweep/certified_search.h): their height is a real point of the solid, not
+  // proven lowest. Expected none; the report warns otherwise.
+  uint64_t unprovenSearches = 0;
   double seconds = 0;
   double evaluationsPerCell() const { return cells ? double(exactEvaluations) / cells : 0; }
 };

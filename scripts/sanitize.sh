@@ -29,4 +29,4 @@ cmake --build "$build" -j "$(nproc)" --target scallop scallop_tests
 export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 cd "$build"
-ctest --output-on-failure -j "$(nproc)" --timeout 1800 -LE 'asan_slow|slurm' -E '^BadInputMatrix\.' "$@"
+ctest --output-on-failure -j "$(nproc)" --timeout 1800 -LE 'asan_slow|slurm|hunt' -E '^BadInputMatrix\.' "$@"

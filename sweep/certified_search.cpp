@@ -68,6 +68,9 @@ inline bool acrossEdge(const SearchSample& a, const SearchSample& b) {
 
 // Searches that hit kMaxSamples before their proof closed (expected: none).
 std::atomic<unsigned long long> unprovenSearchCount{0};
+// The same count for this thread alone: a caster's tile, which runs on one thread without
+// yielding, attributes its searches to its own run by the difference across it.
+thread_local unsigned long long unprovenOnThisThread = 0;
 
 // One search on the line l through (x, y): the samples of f taken so far, the best of
 // them (step 1's U) and the open intervals of step 3, with one method per step of the
@@ -387,8 +390,10 @@ inline LowestPoint CertifiedSearch::branchAndBound() {
     push(boundOf(iv.a, is));
     push(boundOf(is, iv.b));
   }
-  if (openCount_ > 0 && count_ >= kMaxSamples)
+  if (openCount_ > 0 && count_ >= kMaxSamples) {
     unprovenSearchCount.fetch_add(1, std::memory_order_relaxed);
+    ++unprovenOnThisThread;
+  }
   return result();
 }
 
@@ -407,6 +412,10 @@ inline LowestPoint CertifiedSearch::run() {
 
 unsigned long long unprovenCertifiedSearches() {
   return unprovenSearchCount.load();
+}
+
+unsigned long long unprovenCertifiedSearchesOnThisThread() {
+  return unprovenOnThisThread;
 }
 
 LowestPoint certifiedLowestPoint(const Cutter& c, const PoseCurve& curve,

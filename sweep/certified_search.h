@@ -36,5 +36,7 @@ LowestPoint certifiedLowestPoint(const Cutter& cutter, const PoseCurve& curve,
 
 // Searches, over all threads so far, that ran out of samples before their proof closed.
 unsigned long long unprovenCertifiedSearches();
+// The searches of the calling thread alone (what a caster's tile adds to its run's count).
+unsigned long long unprovenCertifiedSearchesOnThisThread();
 
 }  // namespace scallop

@@ -137,6 +137,10 @@ unsigned long long SweptMove::unprovenSearches() {
   return unprovenCertifiedSearches();
 }
 
+unsigned long long SweptMove::unprovenSearchesOnThisThread() {
+  return unprovenCertifiedSearchesOnThisThread();
+}
+
 size_t SweptMove::bytesPerMove(bool turning, bool teeth, bool tipBall, bool ccwTeeth) {
   // The control block and the segment of a constant-axis move live on the heap, and
   // so do the teeth. A general cutter's constant-axis move has no segment, but its tip

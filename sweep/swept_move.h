@@ -112,6 +112,8 @@ class SweptMove {
   // their proof closed (their height is still a real point of the solid). Tests
   // expect none.
   static unsigned long long unprovenSearches();
+  // The same, made by the calling thread (raycast/zmap_caster.cpp counts a run's).
+  static unsigned long long unprovenSearchesOnThisThread();
 
  private:
   LowestPoint turningLowestPoint(double x, double y, SectionMemo* memo, double cutoff,

@@ -212,6 +212,24 @@ TEST(VertexNormals, InconsistentOrientationNamesTheFacet) {
   }
 }
 
+// A closed tetrahedron wound outwards passes; the same wound inwards (every facet's
+// corners the other way round) is refused naming the file and its signed volume, -1/6.
+TEST(VertexNormals, AClosedSurfaceFacingInwardsIsRefused) {
+  const Vec3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  const std::vector<std::array<Vec3, 3>> outwards = {{o, y, x}, {o, x, z}, {o, z, y}, {x, y, z}};
+  requireConsistentOrientation(meshFromTriangles(outwards), "part.stl");
+  std::vector<std::array<Vec3, 3>> inwards = outwards;
+  for (auto& f : inwards) std::swap(f[1], f[2]);
+  try {
+    requireConsistentOrientation(meshFromTriangles(inwards), "part.stl");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "part.stl");
+    EXPECT_NE(std::string(e.what()).find("face inwards"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("-0.166667"), std::string::npos) << e.what();
+  }
+}
+
 TEST(VertexNormals, AreaWeightedMeanOfTheAdjacentFacets) {
   // A right triangle of area 1/2 facing +z and one of area 1 facing +x share the edge on the y
   // axis.

@@ -92,6 +92,7 @@ json simulationReport(const RunRecord& run) {
   json meas = {{"min_height", run.minHeight},
                {"max_height", run.maxHeight},
                {"exact_evaluations_per_cell", cells > 0 ? run.exactEvaluations / cells : 0.0},
+               {"unproven_cells", run.unprovenSearches},
                {"mcells_per_s", run.castSeconds > 0 ? cells / run.castSeconds / 1e6 : 0.0}};
   if (!run.raster.is_null()) meas.update(run.raster);
   if (!run.frameCells.is_null()) meas["frame"] = run.frameCells;

@@ -41,6 +41,7 @@ struct RunRecord {
   double sceneSeconds = 0, castSeconds = 0, writeSeconds = 0, totalSeconds = 0;
   // The heights.
   double minHeight = 0, maxHeight = 0, exactEvaluations = 0;
+  int64_t unprovenSearches = 0;  // CastStats::unprovenSearches
   nlohmann::json raster;        // rasterMeasurements() for a raster job, else null
   nlohmann::json surfaceStats;  // surfaceStatsJson()
   // Optional sections, left out when null.

@@ -89,6 +89,13 @@ RunRecord inMemoryRecord(const Job& job, const SimulationPlan& plan, const RunSe
   run.minHeight = sim.map.minHeight();
   run.maxHeight = sim.map.maxHeight();
   run.exactEvaluations = double(sim.cast.exactEvaluations);
+  run.unprovenSearches = int64_t(sim.cast.unprovenSearches);
+  if (sim.cast.unprovenSearches > 0)
+    std::fprintf(stderr,
+                 "scallop: warning: %llu cells hold a height whose proof did not close (a turning "
+                 "move's certified search ran out of samples): a real point of the swept solid, "
+                 "possibly above its lowest (docs/algorithm.md \"Open holes\")\n",
+                 (unsigned long long)sim.cast.unprovenSearches);
   // The raster's floor and scallops are measured vertically in the part frame.
   if (job.isRaster && !job.frame) run.raster = rasterMeasurements(job, sim.map);
   if (job.frame || job.shapedStock()) run.frameCells = frameCellsJson(sim.frameCells);

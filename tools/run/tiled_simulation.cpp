@@ -211,6 +211,7 @@ RunOutcome runTiledSimulation(Job job, const SimulationPlan& plan, const RunSett
     json stats = {{"rows", {layout.firstRow(b), layout.endRow(b, grid)}},
                   {"cells", cast.cells},
                   {"exact_evaluations", cast.exactEvaluations},
+                  {"unproven_cells", cast.unprovenSearches},
                   {"cast_seconds", cast.seconds},
                   {"scene_build_seconds", bandScene.buildSeconds},
                   {"min_height", band.minHeight()},

@@ -43,7 +43,7 @@ Vec3 vertexAt(int a, int b) {
 
 // The plane z = kPlaneZ as a grid of facets facing +z (`flipOne`: the first facet wound
 // the other way).
-void writePlane(const std::string& file, bool flipOne) {
+void writePlane(const std::string& file, bool flipOne, bool flipAll = false) {
   std::vector<std::array<Vec3, 3>> soup;
   for (int a = 0; a + 1 < kSide; ++a)
     for (int b = 0; b + 1 < kSide; ++b) {
@@ -51,6 +51,8 @@ void writePlane(const std::string& file, bool flipOne) {
       soup.push_back({vertexAt(a + 1, b), vertexAt(a + 1, b + 1), vertexAt(a, b + 1)});
     }
   if (flipOne) std::swap(soup[0][1], soup[0][2]);
+  if (flipAll)
+    for (auto& f : soup) std::swap(f[1], f[2]);
   writeStl(meshFromTriangles(soup), file, StlFormat::Binary, "plane");
 }
 
@@ -139,6 +141,22 @@ TEST_F(NormalDeviationRun, TheReportHasTheAreasAndTheMovesThatGouge) {
   for (size_t k = 1; k < deepest.size(); ++k)
     EXPECT_LE(deepest[k - 1].at("deepest_mm").get<double>(),
               deepest[k].at("deepest_mm").get<double>());
+}
+
+// An open design wound the wrong way round: its normals point down, into the part, and
+// every vertex line is reached from behind. The run says so instead of writing a mesh of
+// NaN in silence.
+TEST_F(NormalDeviationRun, ADesignFacingAwayFromTheToolIsWarnedAbout) {
+  writePlane(path("plane.stl"), false, true);
+  const CliRun r = run("simulate " + write("job.json", kJob).string() + " -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("do the facets face inwards?"), std::string::npos) << r.err;
+  const json report = json::parse(scallop::test::slurp(path("out/report.json")));
+  const json& d = report["design"]["normal_deviation"];
+  EXPECT_EQ(d["vertices"], 0);
+  EXPECT_GT(d["unresolved_vertices"].get<int64_t>(), 0);
+  EXPECT_NE(d["warning"].get<std::string>().find("plane.stl"), std::string::npos);
 }
 
 TEST_F(NormalDeviationRun, BadDesignsAndKeysAreErrorsWithNothingWritten) {
