@@ -194,7 +194,7 @@ LowestPoint SweptMove::locatedPlaneHint(double x, double y, double tStart) const
 }
 
 // Forced inline into lowestPoint, the cast's hot path: where GCC made it a call (when
-// the teeth's per-tooth groups grew lowestCrossing's inline body, stop 40) B1 cast 4.2 %
+// the teeth's per-tooth groups grew lowestCrossing's inline body) B1 cast 4.2 %
 // more instructions a cell.
 __attribute__((always_inline)) inline LowestPoint SweptMove::envelopeOf(double x, double y,
                                                                         SectionMemo* memo,

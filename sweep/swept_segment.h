@@ -97,7 +97,7 @@ class SweptSegment {
     double dcdt = 0;  // slope of the offset along the parameter there (0: unknown)
   };
   // A node is built on the first section() that needs it, not with the segment: the 15
-  // searches were half of the scene build of a million short moves (issue 37), and a
+  // searches were half of the scene build of a million short moves (B9), and a
   // line of cells needs two neighbouring nodes (a B9 cell's segments, 2 to 4 of 15).
   // A node depends on the segment and its index alone, so every thread computes the
   // same bits; the first to claim it publishes it, and a thread that finds it claimed
