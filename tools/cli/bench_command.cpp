@@ -81,6 +81,7 @@ int runBenchCommand(BenchSettings settings, bool json) {
 }
 
 constexpr const char* kBenchHelp =
+    "Run the standard performance cases and print a table.\n"
     "Run the standard performance cases with exact heights and print a table (or JSON):\n"
     "  B1 raster: stock 20 x 20 mm, bull R=3 r=1, lead 5 deg, step-over 0.8 mm, one move\n"
     "     per pass, grid spacing 1 um (4e8 cells);\n"

@@ -32,8 +32,9 @@ Command addCutterCommand(CLI::App& parent, CommonOptions& /*common*/) {
   auto args = std::make_shared<CutterArgs>();
   CLI::App* cmd = parent.add_subcommand(
       "cutter",
-      "Print a cutter's profile (its lines and arcs from the tip up, mm) and optionally\n"
-      "draw it as SVG. TOOL is a cutter object as JSON text, e.g.\n"
+      "Print a cutter's profile (lines and arcs) and draw it as SVG.\n"
+      "The profile's lines and arcs run from the tip up (mm). TOOL is a cutter object as\n"
+      "JSON text, e.g.\n"
       "'{\"type\": \"taper_ball\", \"tip_radius\": 1, \"taper_deg\": 5, \"flute_length\": 20}',\n"
       "or a file holding one or a job with \"tool\" (keys: docs/CONVENTIONS.md).");
   cmd->add_option("tool", args->tool, "Cutter object (JSON text) or cutter/job file")->required();

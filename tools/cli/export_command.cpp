@@ -95,6 +95,7 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
   auto args = std::make_shared<ExportArgs>();
   CLI::App* app = parent.add_subcommand(
       "export",
+      "Convert a height map to X3P, TIFF, PNG or a CSV profile.\n"
       "Convert a height map written by scallop (FILE.gsf or FILE.exr) for metrology software.\n"
       "The format follows --to's extension:\n"
       "  .x3p         ISO 25178-72 / ISO 5436-2 X3P (zip: main.xml, bindata/data.bin float64\n"

@@ -136,7 +136,8 @@ int runSimulate(const SimulateArgs& args) {
 namespace {
 
 constexpr const char* kSimulateHelp =
-    "Simulate a job file and write DIR/heights.exr (float32 channel Z, mm), DIR/heights.gsf\n"
+    "Simulate a job (JSON): its exact height map, preview and report.\n"
+    "Writes DIR/heights.exr (float32 channel Z, mm), DIR/heights.gsf\n"
     "(Gwyddion, metres), DIR/preview.png (shaded colour map with scale) and\n"
     "DIR/report.json (inputs, grid, timings, measurements).\n"
     "Without JOB, runs the built-in default job (see --print-default-job):\n"

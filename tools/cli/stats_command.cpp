@@ -86,6 +86,7 @@ Command addStatsCommand(CLI::App& parent, CommonOptions& common) {
   auto args = std::make_shared<StatsArgs>();
   CLI::App* app = parent.add_subcommand(
       "stats",
+      "ISO 25178-2 height parameters (Sa, Sq, ...) of a height map.\n"
       "ISO 25178-2 height parameters Sa, Sq, Ssk, Sku, Sp, Sv, Sz of a height map written by\n"
       "scallop (FILE.gsf or FILE.exr), over the whole map or a --region, after least-squares\n"
       "plane levelling (default) or none (heights from the mean). Sku is the plain kurtosis\n"
