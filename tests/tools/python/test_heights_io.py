@@ -88,6 +88,10 @@ def rewrite_x3p(src, dst, change):
     (lambda n, d: d.replace(b"<SizeX>", b"<SizeX>x") if n == "main.xml" else d, "SizeX is"),
     (lambda n, d: d.replace(b"<FeatureType>SUR", b"<FeatureType>PRF") if n == "main.xml" else d,
      "FeatureType is not SUR"),
+    (lambda n, d: d.replace(b"</SizeX>", b"") if n == "main.xml" else d,
+     "main.xml is not well-formed XML"),
+    (lambda n, d: d.replace(b"PointDataLink", b"PointLink") if n == "main.xml" else d,
+     "main.xml has no PointDataLink element"),
 ])
 def test_a_damaged_x3p_is_refused_naming_what_is_wrong(tmp_path, result, change, message):
     good = tmp_path / "good.x3p"
