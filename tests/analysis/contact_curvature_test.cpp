@@ -98,7 +98,7 @@ Vec3 barrelSupport(const Vec3& axis, const Vec3& dir) {
   Vec3 radial = dir - axis * along;
   double across = length(radial);
   Vec3 e = across > 1e-300 ? radial / across : normalize(cross(axis, Vec3{0, 1, 0}));
-  const double span = kFormSpanDeg * kPi / 180;
+  const double span = degToRad(kFormSpanDeg);
   const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
   const double p1S = kFormCentreS - kFormRadius * std::sin(span);
   const double vertices[][2] = {{0, 0}, {p1Rho, p1S}, {5, 15}, {5, 30}, {0, 30}};
@@ -149,7 +149,7 @@ TEST(ContactCurvature, BarrelFormArcAgainstTheExactSection) {
 // contact arc found on the profile and its exact section by its own support map agree
 // with the test's own barrel above, and so does the simulated pass of it.
 Cutter barrelCutter() {
-  const double span = kFormSpanDeg * kPi / 180;
+  const double span = degToRad(kFormSpanDeg);
   const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
   const double p1S = kFormCentreS - kFormRadius * std::sin(span);
   std::vector<ProfileSegment> chain(3);

@@ -27,7 +27,7 @@ namespace {
 constexpr double kFormRadius = 250, kFormCentreRho = -245, kFormCentreS = 15;
 
 TEST(ProfileSegmentMove, BarrelAlongAMoveMatchesBruteForce) {
-  const double span = 3 * kPi / 180;
+  const double span = degToRad(3);
   const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
   const double p1S = kFormCentreS - kFormRadius * std::sin(span);
   std::vector<ProfileSegment> chain(3);

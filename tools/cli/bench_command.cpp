@@ -31,7 +31,7 @@ void printTable(std::FILE* out, const json& doc) {
                  c["evals_per_cell"].get<double>(), c["seconds"].get<double>(),
                  c["mcells_per_s"].get<double>(), c["peak_rss_mb"].get<double>(), speedup.c_str());
   }
-  // The scene: build time against the cast's, moves a second, bytes a move (issue 37).
+  // The scene: build time against the cast's, moves a second, bytes a move.
   std::fprintf(out, "\n%-4s %9s %9s %12s %12s %14s\n", "case", "scene s", "cast s", "moves/s",
                "scene B/move", "peak-map B/mv");
   for (const json& c : doc["cases"])
