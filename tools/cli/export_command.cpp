@@ -13,6 +13,7 @@
 #include "tools/cli/command.h"
 #include "tools/io/file_names.h"
 #include "tools/io/height_export.h"
+#include "tools/io/height_formats.h"
 #include "tools/run/map_export.h"
 
 namespace scallop {
@@ -55,10 +56,9 @@ int writeHillshade(const ExportArgs& args, const ZMap& map) {
 
 // The usage errors (exit 2) of --to, --profile and --hillshade; empty when none.
 std::string usageError(const ExportArgs& args, const std::string& ext) {
-  const bool known = ext == ".x3p" || ext == ".png" || ext == ".tif" || ext == ".tiff" ||
-                     ext == ".gsf" || ext == ".exr" || ext == ".csv";
-  if (!known)
-    return "--to: expected a file name ending in .x3p, .png, .tif, .tiff, .gsf, .exr or .csv";
+  if (!findHeightFormat(args.to) && ext != ".csv")
+    return "--to: expected a file name ending in " + heightExtensions(false) +
+           " (heights) or .csv (a profile)";
   if (ext == ".csv" && args.profile.empty())
     return "--to .csv writes a profile: give --profile x0 y0 x1 y1";
   if (ext != ".csv" && !args.profile.empty()) return "--profile goes with a .csv output only";
