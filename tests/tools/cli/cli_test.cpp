@@ -84,7 +84,7 @@ TEST_F(Cli, TopLevelHelpIsOneLineACommand) {
 TEST_F(Cli, VersionPrintsTheProjectVersion) {
   const CliRun r = run("--version");
   EXPECT_EQ(r.status, 0);
-  EXPECT_EQ(r.out, std::string("scallop ") + kScallopVersion + "\n");
+  EXPECT_EQ(r.out, std::string("scallop ") + scallop::kScallopVersion + "\n");
 }
 
 TEST_F(Cli, UnknownMethodIsAUsageErrorAndStampCannotBeTiled) {
