@@ -14,6 +14,7 @@
 
 #include "base/input_error.h"
 #include "tools/io/md5.h"
+#include "tools/io/zip_error.h"
 
 namespace scallop {
 
@@ -128,13 +129,7 @@ Axis axis(const MainXml& xml, const char* name) {
 ZMap readHeightsX3p(const std::string& path) {
   int error = 0;
   std::unique_ptr<zip_t, ZipCloser> zip(zip_open(path.c_str(), ZIP_RDONLY, &error));
-  if (!zip) {
-    zip_error_t e;
-    zip_error_init_with_code(&e, error);
-    const std::string why = zip_error_strerror(&e);
-    zip_error_fini(&e);
-    throw InputError(path, "cannot open the X3P (zip) archive: " + why);
-  }
+  if (!zip) throw InputError(path, "cannot open the X3P (zip) archive: " + zipErrorText(error));
   const MainXml xml(member(zip.get(), "main.xml", path), path);
   if (xml.text({"Record1", "FeatureType"}) != "SUR")
     throw InputError(path, "main.xml: FeatureType is not SUR; expected a surface (height map)");
