@@ -202,4 +202,29 @@ inline Vec3 randomMoveEnd(std::mt19937_64& rng, int k) {
   }
 }
 
+// The barrel the contact-curvature and profile-move tests share, from its definition: in
+// the (rho, s) half-plane a line from the tip (0, 0) to P1, the form arc of radius 250 mm
+// centred at (-245, 15) (across the axis) from P1 to (5, 15), whose normals span
+// -3..0 deg from +rho, and the flank rho = 5 up to s = 30.
+constexpr double kBarrelFormRadius = 250, kBarrelFormCentreRho = -245, kBarrelFormCentreS = 15;
+constexpr double kBarrelFormSpanDeg = 3;
+
+// P1: where the tip's line meets the form arc, mm.
+inline void barrelP1(double* rho, double* s) {
+  const double span = degToRad(kBarrelFormSpanDeg);
+  *rho = kBarrelFormCentreRho + kBarrelFormRadius * std::cos(span);
+  *s = kBarrelFormCentreS - kBarrelFormRadius * std::sin(span);
+}
+
+// The barrel as a cutter of the general kernel.
+inline Cutter barrelCutter() {
+  double p1Rho = 0, p1S = 0;
+  barrelP1(&p1Rho, &p1S);
+  std::vector<ProfileSegment> chain(3);
+  chain[0] = {0, 0, p1Rho, p1S, 0};
+  chain[1] = {p1Rho, p1S, 5, 15, kBarrelFormRadius};
+  chain[2] = {5, 15, 5, 30, 0};
+  return cutterOfChain(CutterType::Profile, chain, "test");
+}
+
 }  // namespace scallop::test
