@@ -96,7 +96,7 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
   CLI::App* app = parent.add_subcommand(
       "export",
       "Convert a height map to X3P, TIFF, PNG or a CSV profile.\n"
-      "Convert a height map written by scallop (FILE.gsf or FILE.exr) for metrology software.\n"
+      "Convert a height map (FILE.gsf, FILE.exr or FILE.x3p) for metrology software.\n"
       "The format follows --to's extension:\n"
       "  .x3p         ISO 25178-72 / ISO 5436-2 X3P (zip: main.xml, bindata/data.bin float64\n"
       "               heights in m, MD5 checksums); Gwyddion, MountainsMap, openGPS read it\n"
@@ -112,7 +112,7 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
       "that micrometre scallops and feed marks show), the factor and the light in the\n"
       "legend, with a scale bar; --region crops it. Maps larger than 1600 cells a side\n"
       "are reduced (block minimum).");
-  app->add_option("FILE", args->file, "Height map: .gsf or .exr")->required();
+  app->add_option("FILE", args->file, "Height map: .gsf, .exr or .x3p")->required();
   app->add_option("--to", args->to, "Output file; its extension picks the format")->required();
   app->add_option("--profile", args->profile, "x0 y0 x1 y1: the profile line for .csv, mm")
       ->expected(4)
