@@ -9,7 +9,7 @@
 // still go below the lowest height found so far, and stops at the first bound at or above
 // it, as an upward ray that each hit shortens would (an Embree BVH of the tiles' boxes
 // did the same; the grid, built for the region queries anyway, gives the same heights
-// with no hierarchy to build: docs/performance.md, B9). Heights themselves are
+// with no hierarchy to build: docs/performance-history.md, B9). Heights themselves are
 // always computed in double by SweptMove::lowestPoint. Squares of cells gather their
 // candidates from the same grid.
 #pragma once
