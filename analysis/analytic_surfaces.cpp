@@ -68,7 +68,8 @@ double surfaceHeight(const SurfaceSpec& spec, double x, double y) {
 TriangleMesh makeAnalyticSurface(const SurfaceSpec& spec) {
   // Lengths beyond 1 km (1e6 mm) are refused, as everywhere in scallop: at such scales
   // the mesh's float coordinates (STL) lose every micrometre.
-  if (!(spec.sizeX > 0) || !(spec.sizeY > 0) || !(spec.sizeX <= 1e6) || !(spec.sizeY <= 1e6))
+  if (!(spec.sizeX > 0) || !(spec.sizeY > 0) || !(spec.sizeX <= kMaxMagnitudeMm) ||
+      !(spec.sizeY <= kMaxMagnitudeMm))
     throw InputError("--size", "both sizes must be lengths in (0, 1e6] mm");
   if (spec.facets < 2 || spec.facets > 50000000)
     throw InputError("--facets", "must be between 2 and 50000000");

@@ -19,7 +19,7 @@ double circularMarkHeight(double rho, double chord) {
 }
 
 double runoutThreshold(double rho, double leadDeg, double fz) {
-  const double lambda = std::fabs(leadDeg) * kPi / 180;
+  const double lambda = degToRad(std::fabs(leadDeg));
   const double s = std::sin(lambda), c = std::cos(lambda);
   // The positive root of 4 c^2 x^2 + 4 rho s x - fz^2 = 0 (dz = the right-hand side).
   return (-rho * s + std::sqrt(rho * rho * s * s + fz * fz * c * c)) / (2 * c * c);
@@ -93,14 +93,14 @@ std::vector<ToothMark> toothMarks(const CutterTeeth& teeth, double cutterRadiusM
                                   double contactHeightMm, double leadRad, double fz) {
   const double s = std::sin(leadRad), c = std::cos(leadRad);
   const double period = teeth.flutes * fz;
-  const double helixTurn = contactHeightMm * std::tan(teeth.helixDeg * kPi / 180) / cutterRadiusMm;
+  const double helixTurn = contactHeightMm * std::tan(degToRad(teeth.helixDeg)) / cutterRadiusMm;
   std::vector<ToothMark> marks;
   for (int k = 0; k < teeth.flutes; ++k) {
     const double psi = teeth.toothAngle(k);
     const ToothOffset o = teeth.toothOffset(k);
     // The tooth's edge at the contact, moved along r (away from the axis) and along -a.
     const double along =
-        teeth.runout * std::cos(teeth.runoutPhaseDeg * kPi / 180 - psi - helixTurn) + o.radial;
+        teeth.runout * std::cos(degToRad(teeth.runoutPhaseDeg) - psi - helixTurn) + o.radial;
     const double sigma = along * c - o.axial * s;
     marks.push_back({period * (psi / (2 * kPi)) + sigma, along * s + o.axial * c});
   }
@@ -121,7 +121,7 @@ FeedMarkPrediction predictFeedMarks(const Cutter& cutter, double leadDeg, double
     return notCovered(
         "a raked edge lies off the meridian plane: its points reach the contact at "
         "different spindle angles, so its marks are sheared arcs (not derived here)");
-  const double lambda = std::fabs(leadDeg) * kPi / 180;
+  const double lambda = degToRad(std::fabs(leadDeg));
   const ContactArc arc = contactArc(cutter, std::sin(lambda), std::cos(lambda));
   if (!arc.found) return notCovered("the contact is not on an arc of the profile: " + arc.reason);
   const double rho = arc.radius;

@@ -2,8 +2,8 @@
 // a device, one scene, one user geometry whose primitives are the moves' boxes, a bounds
 // callback that hands Embree those boxes (rounded outwards to float), and an intersect
 // callback that gathers every box a ray meets and accepts none, so that the ray runs its
-// whole length. (The z-map's culling scene used the same pattern until stop 43; its
-// tile grid now answers those queries: raycast/swept_scene.h.)
+// whole length. (The z-map's culling scene answers such queries with its tile grid
+// instead: raycast/swept_scene.h.)
 #include "analysis/move_line_index.h"
 
 #include <embree3/rtcore.h>

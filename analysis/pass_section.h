@@ -1,4 +1,4 @@
-// PassSection: the exact path interval of any cutter of revolution (issue 33 item 4),
+// PassSection: the exact path interval of any cutter of revolution,
 // the seeds' computational procedure (seed 000 Fig. 1) generalised from the inclined
 // torus to every convex cutter and to lead and tilt together.
 //

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 #include "base/constants.h"
+#include "base/number_text.h"
 
 namespace scallop {
 namespace {
@@ -18,14 +18,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double radians(double deg) {
-  return deg * (kPi / 180.0);
-}
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
+  return deg * kRadPerDeg;
 }
 
 ProcedureResult ok(double valueMm) {
@@ -39,7 +32,7 @@ ProcedureResult notApplicable(std::string reason) {
 
 std::string checkLength(const char* name, double v) {
   if (!std::isfinite(v)) return std::string(name) + " is not a finite number";
-  if (v <= 0) return std::string(name) + " = " + num(v) + " mm must be > 0";
+  if (v <= 0) return std::string(name) + " = " + formatNumber(v) + " mm must be > 0";
   return {};
 }
 
@@ -47,25 +40,25 @@ std::string checkBull(double radius, double cornerRadius) {
   if (auto why = checkLength("tool radius R", radius); !why.empty()) return why;
   if (!std::isfinite(cornerRadius)) return "corner radius Rcr is not a finite number";
   if (cornerRadius <= 0)
-    return "corner radius Rcr = " + num(cornerRadius) +
+    return "corner radius Rcr = " + formatNumber(cornerRadius) +
            " mm must be > 0 (a flat end mill has no fillet)";
   if (cornerRadius >= radius)
-    return "corner radius Rcr = " + num(cornerRadius) + " mm must be < R = " + num(radius) +
-           " mm (Rcr = R is a ball end mill)";
+    return "corner radius Rcr = " + formatNumber(cornerRadius) +
+           " mm must be < R = " + formatNumber(radius) + " mm (Rcr = R is a ball end mill)";
   return {};
 }
 
 std::string checkLead(double leadDeg) {
   if (!std::isfinite(leadDeg)) return "lead angle rho is not a finite number";
   if (std::fabs(leadDeg) >= 90)
-    return "lead angle rho = " + num(leadDeg) + " deg must satisfy |rho| < 90 deg";
+    return "lead angle rho = " + formatNumber(leadDeg) + " deg must satisfy |rho| < 90 deg";
   return {};
 }
 
 // The 2D procedures divide by sin(rho) (Eqs. 5, 9, 11, 13).
 std::string checkSinRho(const char* equation, double leadDeg) {
   if (std::sin(radians(std::fabs(leadDeg))) <= 0)
-    return std::string(equation) + " divides by sin(rho); rho = " + num(leadDeg) +
+    return std::string(equation) + " divides by sin(rho); rho = " + formatNumber(leadDeg) +
            " deg has no such projection";
   return {};
 }
@@ -73,7 +66,8 @@ std::string checkSinRho(const char* equation, double leadDeg) {
 // A tool inclined only along the feed has |Y| <= R everywhere: no L/2 exceeds R.
 std::string checkWithinRadius(double halfInterval, double radius) {
   if (halfInterval > radius)
-    return "L/2 = " + num(halfInterval) + " mm exceeds the tool radius R = " + num(radius) +
+    return "L/2 = " + formatNumber(halfInterval) +
+           " mm exceeds the tool radius R = " + formatNumber(radius) +
            " mm: h is larger than this tool can make";
   return {};
 }
@@ -242,7 +236,7 @@ ProcedureResult computational(double rb, double rcr, double rho, double h, doubl
   if (!std::isfinite(y[iMax]))
     return notApplicable("computational: no section of the torus reaches the h plane");
   if (!torus.onFilletQuarter(g[iMax], p[iMax]))
-    return notApplicable("computational: at h = " + num(h) +
+    return notApplicable("computational: at h = " + formatNumber(h) +
                          " mm the farthest point of the torus lies off the fillet's cutting "
                          "quarter (the flank or the inner half would be cut): h is larger "
                          "than the torus model of Fig. 1 covers");
@@ -274,8 +268,8 @@ ProcedureResult circularHalfInterval(const char* name, const ProcedureResult& re
   if (auto why = checkLength("scallop height h", h); !why.empty())
     return notApplicable(std::string(name) + ": " + why);
   if (h > reff.value)
-    return notApplicable(std::string(name) + ": h = " + num(h) + " mm exceeds R_eff = " +
-                         num(reff.value) + " mm, beyond the circle of Eq. (8)");
+    return notApplicable(std::string(name) + ": h = " + formatNumber(h) + " mm exceeds R_eff = " +
+                         formatNumber(reff.value) + " mm, beyond the circle of Eq. (8)");
   double halfInterval = std::sqrt(2 * reff.value * h - h * h);
   if (auto why = checkWithinRadius(halfInterval, radius); !why.empty())
     return notApplicable(std::string(name) + ": " + why);
@@ -290,7 +284,8 @@ ProcedureResult circularScallopHeight(const char* name, const ProcedureResult& r
   std::string why = checkLength("half interval L/2", halfInterval);
   if (why.empty()) why = checkWithinRadius(halfInterval, radius);
   if (why.empty() && halfInterval > reff.value)
-    why = "L/2 = " + num(halfInterval) + " mm exceeds R_eff = " + num(reff.value) + " mm (Eq. 12)";
+    why = "L/2 = " + formatNumber(halfInterval) +
+          " mm exceeds R_eff = " + formatNumber(reff.value) + " mm (Eq. 12)";
   if (!why.empty()) return notApplicable(std::string(name) + ": " + why);
   return ok(reff.value - std::sqrt(reff.value * reff.value - halfInterval * halfInterval));
 }
@@ -362,8 +357,8 @@ ProcedureResult halfIntervalBedi(double radiusMm, double cornerRadiusMm, double 
   const double depth = rLong.value * std::fabs(std::sin(radians(leadDeg)));
   const double h = scallopHeightMm;
   if (h > depth)
-    return notApplicable("bedi: h = " + num(h) + " mm exceeds R_long sin(rho) = " + num(depth) +
-                         " mm, the half depth of the ellipse of Eq. (11)");
+    return notApplicable("bedi: h = " + formatNumber(h) + " mm exceeds R_long sin(rho) = " +
+                         formatNumber(depth) + " mm, the half depth of the ellipse of Eq. (11)");
   double ratio = (depth - h) / depth;
   return ok(rLong.value * std::sqrt(1 - ratio * ratio));
 }
@@ -374,8 +369,8 @@ ProcedureResult halfIntervalBall(double radiusMm, double scallopHeightMm) {
   if (!why.empty()) return notApplicable(why);
   const double r = radiusMm, h = scallopHeightMm;
   if (h > r)
-    return notApplicable("ball: h = " + num(h) + " mm exceeds the ball radius R = " + num(r) +
-                         " mm (the hemisphere ends there)");
+    return notApplicable("ball: h = " + formatNumber(h) + " mm exceeds the ball radius R = " +
+                         formatNumber(r) + " mm (the hemisphere ends there)");
   return ok(std::sqrt(2 * r * h - h * h));  // seed 001 Eq. (1)
 }
 
@@ -403,7 +398,7 @@ ProcedureResult scallopHeightComputational(double radiusMm, double cornerRadiusM
   double h = 0.5 * (lo + hi);
   ProcedureResult check = lPerH(h);
   if (!check.applicable || std::fabs(check.value - halfIntervalMm) > 1e-6)
-    return notApplicable("computational: L/2 = " + num(halfIntervalMm) +
+    return notApplicable("computational: L/2 = " + formatNumber(halfIntervalMm) +
                          " mm is wider than the fillet makes at any h the torus model covers");
   return ok(h);
 }
@@ -429,8 +424,8 @@ ProcedureResult scallopHeightBedi(double radiusMm, double cornerRadiusMm, double
       "bedi", {checkSinRho("Eq. (13)", leadDeg), checkLength("half interval L/2", halfIntervalMm)});
   if (!why.empty()) return notApplicable(why);
   if (halfIntervalMm > rLong.value)
-    return notApplicable("bedi: L/2 = " + num(halfIntervalMm) +
-                         " mm exceeds R_long = " + num(rLong.value) + " mm (Eq. 13)");
+    return notApplicable("bedi: L/2 = " + formatNumber(halfIntervalMm) +
+                         " mm exceeds R_long = " + formatNumber(rLong.value) + " mm (Eq. 13)");
   // Eq. (13): h = R_long sin(rho) (1 - sqrt(1 - (L / (2 R_long))^2)).
   double ratio = halfIntervalMm / rLong.value;
   return ok(rLong.value * std::fabs(std::sin(radians(leadDeg))) *

@@ -3,11 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 namespace scallop {
 
@@ -16,10 +16,7 @@ namespace {
 constexpr int kMaxSamplingLengths = 5;  // ISO 4288: evaluation length = 5 lr by default
 
 std::string point(double x, double y) {
-  std::ostringstream s;
-  s.precision(10);
-  s << "(" << x << ", " << y << ")";
-  return s.str();
+  return "(" + formatNumber(x) + ", " + formatNumber(y) + ")";
 }
 
 // Position of coordinate `v` in cell-centre index units, 0 at the first centre; a
@@ -83,17 +80,10 @@ Profile extractProfile(const ZMap& map, double x0, double y0, double x1, double 
 }
 
 std::string RoughnessFilter::name() const {
-  std::ostringstream m;
-  m.precision(6);
-  if (cutoffMm > 0)
-    m << "ISO 16610-21 Gaussian, lc " << cutoffMm << " mm";
-  else
-    m << "unfiltered (primary profile less its least-squares line)";
-  if (lambdaSMm > 0)
-    m << ", ls " << lambdaSMm << " mm (Gaussian)";
-  else
-    m << ", no ls";
-  return m.str();
+  std::string m = cutoffMm > 0 ? "ISO 16610-21 Gaussian, lc " + formatNumber(cutoffMm) + " mm"
+                               : "unfiltered (primary profile less its least-squares line)";
+  m += lambdaSMm > 0 ? ", ls " + formatNumber(lambdaSMm) + " mm (Gaussian)" : ", no ls";
+  return m;
 }
 
 namespace {
@@ -184,11 +174,10 @@ RoughnessStats roughness(const Profile& profile, const RoughnessFilter& filter, 
                      "the cutoff wavelength lc must be a positive length in mm, or 0 for "
                      "the unfiltered profile");
   if (!(ls >= 0) || !std::isfinite(ls) || (ls > 0 && ls < 2 * dt) || (lc > 0 && ls >= lc / 2)) {
-    std::ostringstream m;
-    m.precision(10);
-    m << "the short-wave cutoff ls (" << ls << " mm) must be 0 (none) or at least two sample "
-      << "steps (" << 2 * dt << " mm) and below lc / 2 (" << lc / 2 << " mm)";
-    throw InputError(where, m.str());
+    throw InputError(where, "the short-wave cutoff ls (" + formatNumber(ls) +
+                                " mm) must be 0 (none) or at least two sample steps (" +
+                                formatNumber(2 * dt) + " mm) and below lc / 2 (" +
+                                formatNumber(lc / 2) + " mm)");
   }
 
   // The ls-smoothed profile where its kernel fits, z[k] for k in [lsHalf, n - lsHalf).
@@ -213,17 +202,16 @@ RoughnessStats roughness(const Profile& profile, const RoughnessFilter& filter, 
     lengths = valid >= 3 ? 1 : 0;
   }
   if (lengths < 1) {
-    std::ostringstream m;
-    m.precision(10);
-    m << "the profile is " << double(n - 1) * dt << " mm long; ";
+    std::string m = "the profile is " + formatNumber(double(n - 1) * dt) + " mm long; ";
     if (lc > 0)
-      m << "a cutoff of " << lc << " mm needs at least " << 3 * lc + 2 * ls
-        << " mm (run-in, one sampling length, run-out" << (ls > 0 ? ", and ls at each end" : "")
-        << "): lengthen the line, lower --cutoff (ISO 4288: 0.08, 0.25, 0.8, 2.5, 8 mm) or "
+      m += "a cutoff of " + formatNumber(lc) + " mm needs at least " +
+           formatNumber(3 * lc + 2 * ls) + " mm (run-in, one sampling length, run-out" +
+           (ls > 0 ? ", and ls at each end" : "") +
+           "): lengthen the line, lower --cutoff (ISO 4288: 0.08, 0.25, 0.8, 2.5, 8 mm) or "
            "evaluate it unfiltered";
     else
-      m << "the unfiltered profile needs at least 3 samples after ls's run-in and run-out";
-    throw InputError(where, m.str());
+      m += "the unfiltered profile needs at least 3 samples after ls's run-in and run-out";
+    throw InputError(where, m);
   }
   s.samplingLengths = int(lengths);
   s.sampleCount = lengths * perLength;

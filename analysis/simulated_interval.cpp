@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "base/input_error.h"
 #include "raycast/swept_scene.h"
 #include "raycast/zmap.h"
 #include "raycast/zmap_caster.h"
-#include "base/input_error.h"
+#include "sweep/profile_chain.h"
 #include "sweep/raster.h"
 #include "sweep/swept_move.h"
 
@@ -26,12 +27,6 @@ namespace {
 // tangent of a real crossing, e.g. the ellipse of an inclined flat end mill, the gap
 // after bisection to 1e-12 mm is below 1e-6 mm.)
 constexpr double kFlankGapMm = 1e-5;
-
-void requireAngle(double deg, const char* field) {
-  if (!std::isfinite(deg) || std::fabs(deg) >= 90)
-    throw InputError(field,
-                     "must be an angle in degrees with |angle| < 90, got " + std::to_string(deg));
-}
 
 // Golden-section search for the largest value of a unimodal f on [a, b]; returns the
 // abscissa. Ties keep the left part, which is harmless: a tie between two interior

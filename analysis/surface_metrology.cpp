@@ -8,10 +8,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <initializer_list>
-#include <sstream>
 #include <string>
 
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 namespace scallop {
 
@@ -25,14 +25,9 @@ constexpr int64_t kRowsPerLeaf = 4;
 
 // Numbers in messages, to 10 significant digits.
 std::string numbers(std::initializer_list<double> values) {
-  std::ostringstream s;
-  s.precision(10);
-  const char* sep = "";
-  for (double v : values) {
-    s << sep << v;
-    sep = " ";
-  }
-  return s.str();
+  std::string s;
+  for (double v : values) s += (s.empty() ? "" : " ") + formatNumber(v);
+  return s;
 }
 
 template <class Accumulator, class RowFn>

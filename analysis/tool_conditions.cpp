@@ -17,20 +17,13 @@
 #include "analysis/tool_conditions.h"
 
 #include <cmath>
-#include <sstream>
 #include <utility>
 
 #include "base/constants.h"
+#include "base/number_text.h"
 
 namespace scallop {
 namespace {
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 ToolConditions notApplicable(std::string reason) {
   ToolConditions c;
@@ -40,7 +33,7 @@ ToolConditions notApplicable(std::string reason) {
 
 std::string checkPositive(const char* name, double v, const char* unit) {
   if (!std::isfinite(v)) return std::string(name) + " is not a finite number";
-  if (v <= 0) return std::string(name) + " = " + num(v) + " " + unit + " must be > 0";
+  if (v <= 0) return std::string(name) + " = " + formatNumber(v) + " " + unit + " must be > 0";
   return {};
 }
 
@@ -48,8 +41,8 @@ std::string checkPositive(const char* name, double v, const char* unit) {
 std::string checkDepth(const char* name, double depth, const char* cornerName, double corner) {
   if (auto why = checkPositive(name, depth, "mm"); !why.empty()) return why;
   if (depth > corner)
-    return std::string(name) + " = " + num(depth) + " mm exceeds " + cornerName + " = " +
-           num(corner) + " mm: the cutting point would leave the rounded edge";
+    return std::string(name) + " = " + formatNumber(depth) + " mm exceeds " + cornerName + " = " +
+           formatNumber(corner) + " mm: the cutting point would leave the rounded edge";
   return {};
 }
 
@@ -86,17 +79,17 @@ ToolConditions filletedPass(double radius, double cornerRadius, double inclinati
   if (auto why = checkPositive("corner radius Rcr", cornerRadius, "mm"); !why.empty())
     return notApplicable(why);
   if (cornerRadius >= radius)
-    return notApplicable("corner radius Rcr = " + num(cornerRadius) +
-                         " mm must be < R = " + num(radius) + " mm");
+    return notApplicable("corner radius Rcr = " + formatNumber(cornerRadius) +
+                         " mm must be < R = " + formatNumber(radius) + " mm");
   if (!std::isfinite(inclinationDeg) || std::fabs(inclinationDeg) >= 90)
-    return notApplicable("inclination theta = " + num(inclinationDeg) +
+    return notApplicable("inclination theta = " + formatNumber(inclinationDeg) +
                          " deg must be finite with |theta| < 90 deg");
   if (auto why = checkDepth(depthName, depth, "the corner radius Rcr", cornerRadius); !why.empty())
     return notApplicable(why);
   if (auto why = checkPositive("spindle speed S", spindleRpm, "min^-1"); !why.empty())
     return notApplicable(why);
   // The sign of theta mirrors the pass along the feed and changes none of the values.
-  const double theta = std::fabs(inclinationDeg) * (kPi / 180);
+  const double theta = std::fabs(inclinationDeg) * kRadPerDeg;
   const double rb = radius - cornerRadius;
   ToolConditions c;
   c.applicable = true;
@@ -144,8 +137,9 @@ ToolConditions filletedLaterPassEq13(double radiusMm, double cornerRadiusMm, dou
     return notApplicable(why);
   const double reach = radiusMm - cornerRadiusMm + c.rTzMm;  // Rb + R_tz(2)
   if (halfIntervalMm > reach)
-    return notApplicable("half interval L/2 = " + num(halfIntervalMm) + " mm exceeds Rb + R_tz = " +
-                         num(reach) + " mm, the radius of the cutting circle (Eq. 13)");
+    return notApplicable("half interval L/2 = " + formatNumber(halfIntervalMm) +
+                         " mm exceeds Rb + R_tz = " + formatNumber(reach) +
+                         " mm, the radius of the cutting circle (Eq. 13)");
   double beta2 = std::asin(halfIntervalMm / reach);  // Eq. (13)
   c.betaTzRad = 0.5 * c.betaTzRad + beta2;           // beta_tz(1)/2 + beta_tz(2)
   c.frictionalDistanceMm = reach * c.betaTzRad;      // Eq. (14)

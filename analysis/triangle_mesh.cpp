@@ -9,6 +9,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "base/fnv1a.h"
+
 namespace scallop {
 
 Box3 TriangleMesh::bounds() const {
@@ -29,9 +31,9 @@ struct PositionKey {
 };
 struct PositionHash {
   size_t operator()(const PositionKey& k) const {
-    uint64_t h = 1469598103934665603ull;
-    for (uint64_t b : k.bits) h = (h ^ b) * 1099511628211ull, h ^= h >> 29;
-    return size_t(h);
+    Fnv1a hash;  // word-wise, each word's high bits folded down for the buckets
+    for (uint64_t b : k.bits) hash.addWord(b), hash.value ^= hash.value >> 29;
+    return size_t(hash.value);
   }
 };
 PositionKey keyOf(const Vec3& p) {

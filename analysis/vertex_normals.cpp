@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 namespace scallop {
 
@@ -39,12 +40,10 @@ void requireConsistentOrientation(const TriangleMesh& mesh, const std::string& w
   for (const auto& f : mesh.triangles)
     sixVolume += dot(mesh.vertices[f[0]], cross(mesh.vertices[f[1]], mesh.vertices[f[2]]));
   if (sixVolume < 0) {
-    std::ostringstream text;
-    text.precision(6);
-    text << "the facets of this closed surface all face inwards (its signed volume is "
-         << sixVolume / 6 << " mm^3): list each facet's corners the other way round "
-                             "(counter-clockwise seen from outside)";
-    throw InputError(where, text.str());
+    throw InputError(where, "the facets of this closed surface all face inwards (its signed "
+                            "volume is " + formatNumber(sixVolume / 6) +
+                                " mm^3): list each facet's corners the other way round "
+                                "(counter-clockwise seen from outside)");
   }
 }
 

@@ -49,7 +49,7 @@ double programCellsPerMove(const Cutter& cutter, const ToolPath& path, const Box
 // moves alone: per cutting move that reaches below the stock top, the SweptMove (turning
 // or constant-axis, SweptMove::bytesPerMove) and its culling tiles (cullingTileSide's
 // grid over a box that holds the move, each tile counted as kept, ~310 bytes with the
-// most the tile grid lists it); docs/performance.md ("Memory") has what
+// most the tile grid lists it); docs/performance-history.md ("Memory a move") has what
 // it is per move. It errs high, never low: B3's path (22,960 turning moves of 0.05 mm)
 // builds 6.8 KB a move for 12.7 KB estimated; a program of one tile a move (fewer than
 // kCellsPerMoveForTiles cells a move) is estimated within 20 % (tests/raycast/

@@ -60,7 +60,7 @@ bool planeFrom(const SweptMove& seg, const LowestPoint& lp, double x, double y, 
 // u; beyond the move's ends, the stationary cutter's torus normal. Exact for a ball with
 // a vertical axis; for a bull the flat's share (Rb) is taken across the move only, and a
 // tilted axis or another profile only loosens the plane. Five of these replace five exact
-// evaluations, which were a third of the scene build of a million short moves (issue 37).
+// evaluations, which were a third of the scene build of a million short moves (B9).
 LowestPoint closedFormPlaneHint(const SweptMove& seg, double x, double y) {
   const Vec3 &a = seg.start(), &b = seg.end();
   const Cutter& c = seg.cutter();

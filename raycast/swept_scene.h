@@ -7,9 +7,9 @@
 // lists every tile over each bucket in ascending order of its bound there (tile_grid.h).
 // A cell reads its bucket's list in that order, evaluates each segment whose planes can
 // still go below the lowest height found so far, and stops at the first bound at or above
-// it, as an upward ray that each hit shortens would (until stop 43 an Embree BVH of the
-// tiles' boxes did this; the grid, built for the region queries anyway, gives the same
-// heights with no hierarchy to build: docs/performance.md, B9). Heights themselves are
+// it, as an upward ray that each hit shortens would (an Embree BVH of the tiles' boxes
+// did the same; the grid, built for the region queries anyway, gives the same heights
+// with no hierarchy to build: docs/performance-history.md, B9). Heights themselves are
 // always computed in double by SweptMove::lowestPoint. Squares of cells gather their
 // candidates from the same grid.
 #pragma once
@@ -41,8 +41,8 @@ struct SceneOptions {
 };
 
 // Programs with fewer cells than this per move get one culling tile a move. A tile costs
-// the build 5 exact evaluations and its place in the tile grid (with Embree's hierarchy,
-// until stop 43, ~1 KB in all); finer tiles pay back only through the cells they cull for, ~4 exact
+// the build 5 exact evaluations and its place in the tile grid (with an Embree hierarchy
+// it was ~1 KB in all); finer tiles pay back only through the cells they cull for, ~4 exact
 // evaluations a cell shared by every move over it. Measured on B9 (callgrind, 4 mm, 6
 // cells a move): one tile a move instead of ~19 builds in 133 instead of 633 million
 // instructions and casts in 75 instead of 71, the same heights; B3 and B4 (4 300 and

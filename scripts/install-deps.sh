@@ -5,7 +5,7 @@ set -eu
 PACKAGES="cmake ninja-build g++ ccache pkg-config \
   libembree-dev libtbb-dev libeigen3-dev libopenimageio-dev openimageio-tools \
   libcli11-dev nlohmann-json3-dev libfmt-dev libgtest-dev libbenchmark-dev \
-  libzip-dev libfreetype-dev fonts-dejavu-core gwyddion xvfb xauth clang libclang-rt-14-dev \
+  libzip-dev nettle-dev libpugixml-dev libfreetype-dev fonts-dejavu-core gwyddion xvfb xauth clang libclang-rt-14-dev \
   slurm-wlm munge valgrind"
 # valgrind: the performance guard (scripts/perf-guard.sh) counts instructions with callgrind.
 # The Python module (tools/python), its tests and examples/python.

@@ -11,7 +11,7 @@
 # matrices (BadInputMatrix.*, ~200 runs of the binary checking exit codes and messages)
 # are left out too: the plain suite runs them, and the readers they feed are fuzzed
 # under ASan + UBSan (scripts/fuzz.sh) with far more inputs. They are 18 % of the
-# plain suite's test time (measured at stop 22), more under ASan.
+# plain suite's test time (when measured), more under ASan.
 # Usage: scripts/sanitize.sh [extra ctest arguments]
 set -eu
 cd "$(dirname "$0")/.."

@@ -4,6 +4,7 @@
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 #include "sweep/cutter_shapes.h"
 #include "sweep/profile_chain.h"
 
@@ -22,7 +23,7 @@ void requireGiven(double given, double expected, const std::string& field, const
 
 std::vector<ProfileSegment> aptCutterChain(const AptCutterValues& v, const std::string& field) {
   requirePositiveLength(v.d, field + ".d");
-  requireWithin(v.r, 0, 1e6, false, false, field + ".r", "mm");
+  requireWithin(v.r, 0, kMaxMagnitudeMm, false, false, field + ".r", "mm");
   requireWithin(v.a, 0, 90, false, true, field + ".a", "degrees (alpha, the bottom line's angle)");
   requireWithin(v.b, -90, 90, true, true, field + ".b", "degrees (beta, the side line's angle)");
   if (!(v.a + v.b < 90))
@@ -30,8 +31,8 @@ std::vector<ProfileSegment> aptCutterChain(const AptCutterValues& v, const std::
                      "a + b must be < 90 degrees (the side line must turn up from "
                      "the bottom line), got " +
                          formatNumber(v.a + v.b));
-  requireWithin(v.e, -1e6, 1e6, false, false, field + ".e", "mm");
-  requireWithin(v.f, -1e6, 1e6, false, false, field + ".f", "mm");
+  requireWithin(v.e, -kMaxMagnitudeMm, kMaxMagnitudeMm, false, false, field + ".e", "mm");
+  requireWithin(v.f, -kMaxMagnitudeMm, kMaxMagnitudeMm, false, false, field + ".f", "mm");
   requirePositiveLength(v.h, field + ".h");
   const double a = v.a * kRadPerDeg, b = v.b * kRadPerDeg;
   // The lines meet at P; each has a unit direction u (up the profile) and an inward

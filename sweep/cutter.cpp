@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 namespace scallop {
 
@@ -49,15 +49,12 @@ CutterType parseCutterType(const std::string& name, const std::string& field) {
 
 namespace {
 
+// A runout phase beyond this many degrees is a mistake, not an angle anyone means.
+constexpr double kMaxPhaseDeg = 1e6;
+
 void requireFinite(double v, const std::string& field) {
   if (!std::isfinite(v))
     throw InputError(field, "must be a finite number of mm, got " + std::to_string(v));
-}
-
-std::string fmtLength(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
 }
 
 }  // namespace
@@ -71,7 +68,8 @@ Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double 
   if (radius <= 0) throw InputError(rField, "must be > 0 mm, got " + std::to_string(radius));
   // 1 km: beyond it no result would mean anything at micrometre resolution (and the
   // scene's tile counts would overflow); the job reader applies the same bound.
-  if (radius > 1e6) throw InputError(rField, "must be <= 1e6 mm (1 km), got " + fmtLength(radius));
+  if (radius > kMaxMagnitudeMm)
+    throw InputError(rField, "must be <= 1e6 mm (1 km), got " + formatNumber(radius));
 
   Cutter c;
   c.type = type;
@@ -100,7 +98,7 @@ Cutter Cutter::make(CutterType type, double radius, double cornerRadius, double 
     throw InputError(flField, "must be a finite number of mm");
   c.fluteLength = fluteLength > 0 ? fluteLength : 4 * radius;
   if (c.fluteLength > 4e6)
-    throw InputError(flField, "must be <= 4e6 mm, got " + fmtLength(c.fluteLength));
+    throw InputError(flField, "must be <= 4e6 mm, got " + formatNumber(c.fluteLength));
   // The flute must at least contain the rounded bottom, or the solid is not the one
   // described in CONVENTIONS.md.
   if (c.fluteLength < c.cornerRadius)
@@ -116,14 +114,14 @@ CutterTeeth CutterTeeth::make(int flutes, double helixDeg, double runout, double
                      "must be a whole number of teeth from 1 to 16, got " + std::to_string(flutes));
   if (!std::isfinite(helixDeg) || helixDeg < 0 || helixDeg > 60)
     throw InputError(fieldPrefix + ".helix_deg",
-                     "must be a helix angle from 0 to 60 degrees, got " + fmtLength(helixDeg));
+                     "must be a helix angle from 0 to 60 degrees, got " + formatNumber(helixDeg));
   // Runout is a small eccentricity; beyond R / 10 the tool is not a milling cutter any
   // more, and the spindle envelope (Cutter::spindleEnvelope) would be a poor bound.
   if (!std::isfinite(runout) || runout < 0 || runout > 0.1 * cutterRadius)
     throw InputError(fieldPrefix + ".runout_mm", "must be from 0 to radius / 10 (" +
-                                                     fmtLength(0.1 * cutterRadius) + " mm), got " +
-                                                     fmtLength(runout));
-  if (!std::isfinite(runoutPhaseDeg) || std::abs(runoutPhaseDeg) > 1e6)
+                                                     formatNumber(0.1 * cutterRadius) +
+                                                     " mm), got " + formatNumber(runout));
+  if (!std::isfinite(runoutPhaseDeg) || std::abs(runoutPhaseDeg) > kMaxPhaseDeg)
     throw InputError(fieldPrefix + ".runout_phase_deg", "must be a finite angle in degrees");
   CutterTeeth teeth;
   teeth.flutes = flutes;
@@ -149,7 +147,7 @@ CutterTeeth::Table& CutterTeeth::edit() {
 
 double CutterTeeth::toothAngle(int k) const {
   if (toothAnglesDeg().empty()) return 2 * kPi * k / flutes;
-  return toothAnglesDeg()[size_t(k)] * kPi / 180;
+  return degToRad(toothAnglesDeg()[size_t(k)]);
 }
 
 double CutterTeeth::radialReach() const {

@@ -20,11 +20,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 #include "sweep/cutter.h"
 
 namespace scallop {
@@ -58,12 +58,6 @@ bool inSector(const ProfileSegment& g, double dRho, double dS) {
          dRho * (ar + br) + dS * (as + bs) > 0;
 }
 
-std::string formatMm(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 }  // namespace
 
 CutterProfile CutterProfile::make(std::vector<ProfileSegment> chain, const std::string& field) {
@@ -76,23 +70,23 @@ CutterProfile CutterProfile::make(std::vector<ProfileSegment> chain, const std::
       if (!std::isfinite(v) || std::fabs(v) > 4e6)
         throw InputError(where(i), "every coordinate and radius must be a finite number of mm");
     if (std::hypot(g.rho0 - prevRho, g.s0 - prevS) > kJoinSlack)
-      throw InputError(where(i), "starts at (" + formatMm(g.rho0) + ", " + formatMm(g.s0) +
-                                     ") mm, not " +
-                                     (i == 0 ? "at the tip (0, 0)" : "where the previous ends") +
-                                     " (" + formatMm(prevRho) + ", " + formatMm(prevS) + ")");
+      throw InputError(
+          where(i), "starts at (" + formatNumber(g.rho0) + ", " + formatNumber(g.s0) +
+                        ") mm, not " + (i == 0 ? "at the tip (0, 0)" : "where the previous ends") +
+                        " (" + formatNumber(prevRho) + ", " + formatNumber(prevS) + ")");
     g.rho0 = prevRho, g.s0 = prevS;
     if (g.rho1 < -kJoinSlack)
-      throw InputError(where(i), "ends at rho = " + formatMm(g.rho1) + " mm, across the axis");
+      throw InputError(where(i), "ends at rho = " + formatNumber(g.rho1) + " mm, across the axis");
     g.rho1 = std::max(0.0, g.rho1);
     const double chord = std::hypot(g.rho1 - g.rho0, g.s1 - g.s0);
     if (!(chord > kJoinSlack)) throw InputError(where(i), "has zero length");
     if (g.arcRadius < 0)
       throw InputError(where(i), "an arc radius must be > 0 mm (0: a straight line), got " +
-                                     formatMm(g.arcRadius));
+                                     formatNumber(g.arcRadius));
     if (g.arcRadius > 0) {
       if (chord > 2 * g.arcRadius * (1 + 1e-12))
-        throw InputError(where(i), "an arc of radius " + formatMm(g.arcRadius) +
-                                       " mm cannot join ends " + formatMm(chord) + " mm apart");
+        throw InputError(where(i), "an arc of radius " + formatNumber(g.arcRadius) +
+                                       " mm cannot join ends " + formatNumber(chord) + " mm apart");
       // The centre on the solid's side (left of the chord, walking from the tip up).
       const double h = std::sqrt(std::max(0.0, g.arcRadius * g.arcRadius - 0.25 * chord * chord));
       const double ur = (g.rho1 - g.rho0) / chord, us = (g.s1 - g.s0) / chord;

@@ -6,6 +6,7 @@
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 #include "sweep/profile_chain.h"
 
 namespace scallop {
@@ -123,8 +124,8 @@ std::vector<ProfileSegment> coneChain(const ConeShape& shape, const std::string&
 std::vector<ProfileSegment> barrelChain(const BarrelShape& shape, const std::string& field) {
   requirePositiveLength(shape.diameter, field + ".diameter");
   requirePositiveLength(shape.fluteLength, field + ".flute_length");
-  requireWithin(shape.formRadius, shape.diameter / 2, 1e6, true, false, field + ".form_radius",
-                "mm (more than half the diameter)");
+  requireWithin(shape.formRadius, shape.diameter / 2, kMaxMagnitudeMm, true, false,
+                field + ".form_radius", "mm (more than half the diameter)");
   const double L = shape.fluteLength, Rf = shape.formRadius, r = shape.tipRadius;
   const double he = shape.equatorHeight > 0 ? shape.equatorHeight : L / 2;
   requireWithin(he, 0, L, true, false, field + ".equator_height",
@@ -157,8 +158,8 @@ std::vector<ProfileSegment> barrelChain(const BarrelShape& shape, const std::str
 std::vector<ProfileSegment> taperBarrelChain(const TaperBarrelShape& shape,
                                              const std::string& field) {
   requirePositiveLength(shape.tipRadius, field + ".tip_radius");
-  requireWithin(shape.formRadius, shape.tipRadius, 1e6, true, false, field + ".form_radius",
-                "mm (more than the tip radius)");
+  requireWithin(shape.formRadius, shape.tipRadius, kMaxMagnitudeMm, true, false,
+                field + ".form_radius", "mm (more than the tip radius)");
   requireWithin(shape.taperDeg, 0, 45, false, false, field + ".taper_deg", "degrees");
   requirePositiveLength(shape.referenceDiameter, field + ".reference_diameter");
   requirePositiveLength(shape.fluteLength, field + ".flute_length");
@@ -192,8 +193,8 @@ std::vector<ProfileSegment> ovalChain(const OvalShape& shape, const std::string&
   requirePositiveLength(shape.diameter, field + ".diameter");
   requireWithin(shape.tipRadius, 0, shape.diameter / 2, true, true, field + ".tip_radius",
                 "mm (less than half the diameter)");
-  requireWithin(shape.formRadius, shape.diameter / 2, 1e6, true, false, field + ".form_radius",
-                "mm (more than half the diameter)");
+  requireWithin(shape.formRadius, shape.diameter / 2, kMaxMagnitudeMm, true, false,
+                field + ".form_radius", "mm (more than half the diameter)");
   requirePositiveLength(shape.fluteLength, field + ".flute_length");
   const double r = shape.tipRadius, Rf = shape.formRadius;
   // The side circle's centre (D/2 - Rf, he) at Rf - r from the tip ball's (0, r).
@@ -210,8 +211,8 @@ std::vector<ProfileSegment> ovalChain(const OvalShape& shape, const std::string&
 
 std::vector<ProfileSegment> lensChain(const LensShape& shape, const std::string& field) {
   requirePositiveLength(shape.diameter, field + ".diameter");
-  requireWithin(shape.formRadius, shape.diameter / 2, 1e6, true, false, field + ".form_radius",
-                "mm (the tip arc: more than half the diameter)");
+  requireWithin(shape.formRadius, shape.diameter / 2, kMaxMagnitudeMm, true, false,
+                field + ".form_radius", "mm (the tip arc: more than half the diameter)");
   requireWithin(shape.cornerRadius, 0, shape.diameter / 2, false, true, field + ".corner_radius",
                 "mm (less than half the diameter)");
   const double R = shape.diameter / 2, Rf = shape.formRadius, rc = shape.cornerRadius;

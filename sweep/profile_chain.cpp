@@ -1,9 +1,10 @@
 #include "sweep/profile_chain.h"
 
 #include <cmath>
-#include <cstdio>
 
+#include "base/constants.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 namespace scallop {
 
@@ -30,12 +31,6 @@ void appendArc(std::vector<ProfileSegment>& chain, ProfilePoint a, ProfilePoint 
   chain.push_back(seg);
 }
 
-std::string formatNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
-
 void requireWithin(double value, double lo, double hi, bool openLo, bool openHi,
                    const std::string& field, const char* unit) {
   const bool above = openLo ? value > lo : value >= lo;
@@ -47,7 +42,13 @@ void requireWithin(double value, double lo, double hi, bool openLo, bool openHi,
 }
 
 void requirePositiveLength(double value, const std::string& field) {
-  requireWithin(value, 0, 1e6, true, false, field, "mm");
+  requireWithin(value, 0, kMaxMagnitudeMm, true, false, field, "mm");
+}
+
+void requireAngle(double deg, const std::string& field) {
+  if (!std::isfinite(deg) || std::fabs(deg) >= 90)
+    throw InputError(field,
+                     "must be an angle in degrees with |angle| < 90, got " + formatNumber(deg));
 }
 
 }  // namespace scallop

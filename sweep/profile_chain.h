@@ -22,10 +22,9 @@ void appendArc(std::vector<ProfileSegment>& chain, ProfilePoint a, ProfilePoint 
 // InputError naming `field` that says the range and the unit.
 void requireWithin(double value, double lo, double hi, bool openLo, bool openHi,
                    const std::string& field, const char* unit);
-// A length > 0 mm (and <= 1e6 mm).
+// A length > 0 mm (and <= kMaxMagnitudeMm).
 void requirePositiveLength(double value, const std::string& field);
-
-// A number as messages print it (shortest form that reads back, "%.10g").
-std::string formatNumber(double value);
+// An angle in degrees with |angle| < 90 (a lead or a tilt).
+void requireAngle(double deg, const std::string& field);
 
 }  // namespace scallop

@@ -6,17 +6,15 @@
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "sweep/profile_chain.h"
 #include "sweep/swept_segment.h"
 
 namespace scallop {
 
 namespace {
 
-void requireAngle(double deg, const std::string& field) {
-  if (!std::isfinite(deg) || std::fabs(deg) >= 90)
-    throw InputError(field,
-                     "must be an angle in degrees with |angle| < 90, got " + std::to_string(deg));
-}
+// A raster of more passes is refused up front: every move is held in memory.
+constexpr double kMaxPasses = 1e6;
 
 }  // namespace
 
@@ -45,7 +43,7 @@ ToolPath makeRaster(const Cutter& cutter, const Box3& stock, const RasterSpec& s
   const double feedMin = (alongX ? stock.min.x : stock.min.y) - cutter.radius - 1;
   const double feedMax = (alongX ? stock.max.x : stock.max.y) + cutter.radius + 1;
   const double passes = std::floor((crossMax - crossMin) / spec.stepOver + 1e-9) + 1;
-  if (passes > 1e6)
+  if (passes > kMaxPasses)
     throw InputError(f + "step_over", "gives " + std::to_string(passes) + " passes; too many");
   const double floorZ = stock.max.z - spec.depth;
   // Every move is kept in memory: refuse a path that could not be held, up front.

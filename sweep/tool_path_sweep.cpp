@@ -260,7 +260,7 @@ ToolPathSweeper::ToolPathSweeper(std::vector<Cutter> cutters, const CuttingModel
   s.teeth = cutting.teeth();
   for (const Cutter& c : s.cutters) s.swept.push_back(s.teeth ? c.spindleEnvelope() : c);
   if (window) s.window = *window;
-  s.phase = std::fmod(cutting.phaseDeg * kPi / 180, 2 * kPi);
+  s.phase = std::fmod(degToRad(cutting.phaseDeg), 2 * kPi);
   // Room for every entry at once, so the moves are never copied as the vector grows.
   // Merged moves leave the end of the room untouched, so never resident (the peak is the
   // same as growing by doubling, which glibc's mremap does without copies: B9 --area 40,

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "base/constants.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 namespace scallop {
 
@@ -13,12 +13,6 @@ namespace {
 
 std::string entry(const std::string& field, size_t k) {
   return field + "[" + std::to_string(k) + "]";
-}
-
-std::string mm(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
 }
 
 }  // namespace
@@ -38,7 +32,7 @@ void checkToothGeometry(const std::vector<double>& anglesDeg,
         throw InputError(entry(angles, k),
                          "body angles in degrees must start at 0, increase strictly and stay "
                          "below 360, got " +
-                             mm(a));
+                             formatNumber(a));
     }
   }
   if (offsets.empty()) return;
@@ -54,22 +48,23 @@ void checkToothGeometry(const std::vector<double>& anglesDeg,
     if (!std::isfinite(o.radial) || !std::isfinite(o.axial) || std::abs(o.radial) > most ||
         std::abs(o.axial) > most)
       throw InputError(entry(field, k), "offsets must be finite and within radius / 10 (" +
-                                            mm(most) + " mm), got [" + mm(o.radial) + ", " +
-                                            mm(o.axial) + "]");
+                                            formatNumber(most) + " mm), got [" +
+                                            formatNumber(o.radial) + ", " + formatNumber(o.axial) +
+                                            "]");
     if (o.radial < -bottomRadius)
       throw InputError(entry(field, k) + "[0]",
-                       "a radial offset below -(R - r) = " + mm(-bottomRadius) +
+                       "a radial offset below -(R - r) = " + formatNumber(-bottomRadius) +
                            " mm carries the edge across the axis (give the other teeth "
                            "positive offsets instead), got " +
-                           mm(o.radial));
+                           formatNumber(o.radial));
   }
 }
 
 RakeLag::RakeLag(const ToothRake& rake, double rho0, double h0) {
   if (rake.zero()) return;
   active_ = true;
-  gr_ = rake.radialDeg * kPi / 180;
-  const double ga = rake.axialDeg * kPi / 180;
+  gr_ = degToRad(rake.radialDeg);
+  const double ga = degToRad(rake.axialDeg);
   d0_ = -rho0 * std::sin(gr_);
   slope_ = std::tan(ga) * std::cos(gr_);
   h0_ = h0;
@@ -89,7 +84,7 @@ void checkToothRakes(const std::vector<ToothRake>& rakes, int flutes, const std:
       throw InputError(perTooth ? entry(field, k) : field,
                        "a rake [axial_deg, radial_deg] has each angle within -45 to 45 degrees, "
                        "got [" +
-                           mm(r.axialDeg) + ", " + mm(r.radialDeg) + "]");
+                           formatNumber(r.axialDeg) + ", " + formatNumber(r.radialDeg) + "]");
   }
 }
 
@@ -130,8 +125,8 @@ void checkEdgeSpans(const std::vector<EdgeSpan>& spans, int flutes, double edgeL
       throw InputError(perTooth ? entry(field, k) : field,
                        "an edge span [from_mm, to_mm] is arc length along the profile from "
                        "the axis, 0 <= from < to <= " +
-                           mm(edgeLength) + " mm (the whole edge), got [" + mm(s.from) + ", " +
-                           mm(s.to) + "]");
+                           formatNumber(edgeLength) + " mm (the whole edge), got [" +
+                           formatNumber(s.from) + ", " + formatNumber(s.to) + "]");
   }
 }
 

@@ -139,8 +139,8 @@ ToothSweep::ToothSweep(const Cutter& cutter, const PoseCurve& curve, double phas
   axisStart_ = curve_.axis(0);
   e1Start_ = referenceAcross(axisStart_);
   e2Start_ = ccw_ ? cross(e1Start_, axisStart_) : cross(axisStart_, e1Start_);
-  helixSlope_ = std::tan(cutter_.teeth.helixDeg * kPi / 180) / cutter_.radius;
-  runoutPhase_ = cutter_.teeth.runoutPhaseDeg * kPi / 180;
+  helixSlope_ = std::tan(degToRad(cutter_.teeth.helixDeg)) / cutter_.radius;
+  runoutPhase_ = degToRad(cutter_.teeth.runoutPhaseDeg);
   tipSpeed_ = curve_.tipSpeedBound();
   translates_ = curve_.constantAxis() && curve_.linearTip();
   vertical_ = translates_ && axisStart_.x == 0 && axisStart_.y == 0 && axisStart_.z == 1;

@@ -18,6 +18,7 @@
 #include "sweep/cutter_profile.h"
 #include "sweep/cutter_shapes.h"
 #include "sweep/raster.h"
+#include "tests/sweep/profile_cases.h"
 
 namespace scallop {
 namespace {
@@ -90,17 +91,17 @@ TEST(ContactCurvature, BullWithLeadAndTiltIsCloseToExact) {
 // -3..0 deg from +rho, the flank rho = 5 up to s = 30 and the cap. Its support map:
 // the best of the profile's vertices and the arc point whose normal is the direction's
 // (when it lies on the arc), turned about the axis.
-constexpr double kFormRadius = 250, kFormCentreRho = -245, kFormCentreS = 15;
-constexpr double kFormSpanDeg = 3;
+constexpr double kFormRadius = test::kBarrelFormRadius;
+constexpr double kFormCentreRho = test::kBarrelFormCentreRho,
+                 kFormCentreS = test::kBarrelFormCentreS;
 
 Vec3 barrelSupport(const Vec3& axis, const Vec3& dir) {
   const double along = dot(dir, axis);
   Vec3 radial = dir - axis * along;
   double across = length(radial);
   Vec3 e = across > 1e-300 ? radial / across : normalize(cross(axis, Vec3{0, 1, 0}));
-  const double span = kFormSpanDeg * kPi / 180;
-  const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
-  const double p1S = kFormCentreS - kFormRadius * std::sin(span);
+  double p1Rho = 0, p1S = 0;
+  test::barrelP1(&p1Rho, &p1S);
   const double vertices[][2] = {{0, 0}, {p1Rho, p1S}, {5, 15}, {5, 30}, {0, 30}};
   double bestRho = 0, bestS = 0, best = -HUGE_VAL;
   auto consider = [&](double rho, double s) {
@@ -108,7 +109,7 @@ Vec3 barrelSupport(const Vec3& axis, const Vec3& dir) {
   };
   for (const auto& v : vertices) consider(v[0], v[1]);
   const double angle = std::atan2(along, across);
-  if (angle >= -span && angle <= 0)
+  if (angle >= -degToRad(test::kBarrelFormSpanDeg) && angle <= 0)
     consider(kFormCentreRho + kFormRadius * std::cos(angle),
              kFormCentreS + kFormRadius * std::sin(angle));
   return e * bestRho + axis * bestS;
@@ -145,22 +146,12 @@ TEST(ContactCurvature, BarrelFormArcAgainstTheExactSection) {
   }
 }
 
-// The same barrel as a cutter of the general kernel (sweep/cutter_profile.h): its
-// contact arc found on the profile and its exact section by its own support map agree
-// with the test's own barrel above, and so does the simulated pass of it.
-Cutter barrelCutter() {
-  const double span = kFormSpanDeg * kPi / 180;
-  const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
-  const double p1S = kFormCentreS - kFormRadius * std::sin(span);
-  std::vector<ProfileSegment> chain(3);
-  chain[0] = {0, 0, p1Rho, p1S, 0};
-  chain[1] = {p1Rho, p1S, 5, 15, kFormRadius};
-  chain[2] = {5, 15, 5, 30, 0};
-  return cutterOfChain(CutterType::Profile, chain, "test");
-}
-
+// The same barrel as a cutter of the general kernel (sweep/cutter_profile.h,
+// test::barrelCutter): its contact arc found on the profile and its exact section by its
+// own support map agree with the test's own barrel above, and so does the simulated pass
+// of it.
 TEST(ContactCurvature, BarrelCutterOfTheGeneralKernelAgrees) {
-  const Cutter barrel = barrelCutter();
+  const Cutter barrel = test::barrelCutter();
   for (const Posture& p : {Posture{0, 88.5}, Posture{20, 88}, Posture{88.5, 0}}) {
     const Vec3 a = leadTiltAxis(Vec3{1, 0, 0}, p.leadDeg, p.tiltDeg);
     const ProcedureResult rEff = effectiveRadiusAtContact(barrel, p.leadDeg, p.tiltDeg);

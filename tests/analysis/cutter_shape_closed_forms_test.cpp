@@ -1,4 +1,4 @@
-// Issue 33's closed forms for the new cutter shapes, each against the simulated truth
+// The closed forms of the cutter shapes, each against the simulated truth
 // (SimulatedPass: passes swept and ray-cast, the cusp refined on the exact heights) and
 // the exact path interval (PassSection), which share only the cutter's support map:
 //   * a V-bit's groove in a plane: at depth d, its walls are the cone's lines, so the
@@ -31,7 +31,7 @@ TEST(CutterShapeClosedForms, VBitGrooveIsTheConesDepthAndWidth) {
     vbit.diameter = 6;
     vbit.fluteLength = 10;
     const Cutter cutter = cutterOfChain(CutterType::Cone, coneChain(vbit, "tool"), "tool");
-    const double halfAngle = angleDeg / 2 * kPi / 180;
+    const double halfAngle = degToRad(angleDeg / 2);
     const SimulatedPass pass(cutter, 0, 0);
     const PassSection section = PassSection::of(cutter, 0, 0);
     EXPECT_NEAR(section.floorZ(), 0, kExactMm) << angleDeg;  // the groove's bottom: the tip
@@ -58,7 +58,7 @@ TEST(CutterShapeClosedForms, TaperBallAtZeroLeadLeavesItsTipBallsScallop) {
     shape.fluteLength = 12;
     const Cutter cutter =
         cutterOfChain(CutterType::TaperBall, taperBallChain(shape, "tool"), "tool");
-    const double r = shape.tipRadius, b = taperDeg * kPi / 180;
+    const double r = shape.tipRadius, b = degToRad(taperDeg);
     const SimulatedPass pass(cutter, 0, 0);
     const PassSection section = PassSection::of(cutter, 0, 0);
     for (const double w : {0.2, 0.8, 1.5, 1.8}) {

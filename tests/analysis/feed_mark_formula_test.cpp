@@ -43,7 +43,7 @@ TEST(FeedMarkFormula, ThresholdSatisfiesItsEquality) {
   for (double lead : {5.0, 15.0, 45.0, -15.0}) {
     for (double fz : {0.02, 0.1, 0.3}) {
       const double rho = 3, x = runoutThreshold(rho, lead, fz);
-      const double l = std::fabs(lead) * kPi / 180;
+      const double l = degToRad(std::fabs(lead));
       const double dz = 2 * x * std::sin(l), sigma = 2 * x * std::cos(l);
       EXPECT_GT(x, 0);
       EXPECT_NEAR(dz, (fz - sigma) * (fz + sigma) / (2 * rho), 1e-15) << lead << " " << fz;
@@ -126,15 +126,15 @@ TEST(FeedMarkFormula, ToothMarksAreTheEdgesMovedByTheirErrors) {
   CutterTeeth teeth = CutterTeeth::make(3, 20, 0.002, 75, 3);
   teeth.editToothAnglesDeg() = {0, 110, 230};
   teeth.editToothOffsets() = {{0.001, -0.0005}, {0, 0.0008}, {-0.0004, 0}};
-  const double lead = 25 * kPi / 180, fz = 0.07, hc = 3 * (1 - std::cos(lead));
+  const double lead = degToRad(25), fz = 0.07, hc = 3 * (1 - std::cos(lead));
   const std::vector<ToothMark> marks = toothMarks(teeth, 3, hc, lead, fz);
   ASSERT_EQ(marks.size(), 3u);
   const double rx = std::cos(lead), rz = -std::sin(lead), ax = std::sin(lead), az = std::cos(lead);
   for (int k = 0; k < 3; ++k) {
-    const double psi = teeth.toothAnglesDeg()[size_t(k)] * kPi / 180;
+    const double psi = degToRad(teeth.toothAnglesDeg()[size_t(k)]);
     // At the moment tooth k's edge at hc faces the contact, the runout vector's angle
     // from the contact direction is (runout phase) - (psi_k + hc tan(beta) / R).
-    const double rel = 75 * kPi / 180 - (psi + hc * std::tan(20 * kPi / 180) / 3);
+    const double rel = degToRad(75) - (psi + hc * std::tan(degToRad(20)) / 3);
     const double q = 0.002 * std::cos(rel) + teeth.toothOffsets()[size_t(k)].radial;
     const double da = teeth.toothOffsets()[size_t(k)].axial;
     const double x = q * rx - da * ax, z = q * rz - da * az;  // the edge's displacement

@@ -1,7 +1,6 @@
 // Normal deviation along lines in any direction (analysis/normal_deviation.h) against
 // the independent brute-force reference (tests/sweep/brute_force_reference.h), for bull
-// and flat cutters (issue 34's acceptance: "independent brute force for bull and flat
-// cutters along arbitrary directions"). Each case: a design triangle with a random
+// and flat cutters along arbitrary directions. Each case: a design triangle with a random
 // normal n anywhere on the sphere (walls and overhangs included), straight moves with
 // random constant axes on n's side, near its vertices. The reference sees the line only
 // as a vertical one: the test turns the world by its own rotation taking n to +z about
@@ -66,7 +65,7 @@ TEST(NormalDeviationReference, BullAndFlatAlongAnyDirection) {
     for (int m = 0; m < 3; ++m) {
       Vec3 a;
       do a = unit();
-      while (dot(a, nn) < std::cos(70 * kPi / 180));
+      while (dot(a, nn) < std::cos(degToRad(70)));
       const Vec3 p0 = V + e1 * (0.6 * R * (u(rng) - 0.5)) + e2 * (0.6 * R * (u(rng) - 0.5)) +
                       nn * (0.4 * u(rng) - 0.1);
       const Vec3 p1 = p0 + unit() * (1.5 * u(rng));

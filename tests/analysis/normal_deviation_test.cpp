@@ -21,7 +21,7 @@
 namespace scallop {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180;
+constexpr double kDeg = kRadPerDeg;
 
 // A design surface from a grid of points P(i, j), i < ni, j < nj, wound so that its
 // normal is (P(i, j + 1) - P(i, j)) x (P(i + 1, j) - P(i, j)).
@@ -226,7 +226,7 @@ TEST(VertexNormals, AClosedSurfaceFacingInwardsIsRefused) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "part.stl");
     EXPECT_NE(std::string(e.what()).find("face inwards"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("-0.166667"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("-0.1666666667"), std::string::npos) << e.what();
   }
 }
 

@@ -56,7 +56,7 @@ TEST(PassSection, InclinedFlatEndMillMatchesTheEllipse) {
   const double R = 3;
   for (double rho : {5.0, 10.0, 20.0, 45.0}) {
     const PassSection section = PassSection::of(Cutter::make(CutterType::Flat, R), rho, 0);
-    const double depth = R * std::sin(rho * kPi / 180);
+    const double depth = R * std::sin(degToRad(rho));
     for (double h : {1e-4, 0.02, 0.05, 0.2, 0.9 * depth}) {
       if (h >= depth) continue;
       const double want = R * std::sqrt(1 - std::pow((depth - h) / depth, 2));
@@ -102,7 +102,7 @@ TEST(PassSection, BullWithLeadMatchesTheComputationalProcedure) {
 TEST(PassSection, BullWithTiltOnlyLeavesItsCornerArc) {
   const double R = 4, r = 1.5;
   for (double tilt : {10.0, 30.0, -45.0}) {
-    const double limit = r * (1 - std::cos(tilt * kPi / 180));
+    const double limit = r * (1 - std::cos(degToRad(tilt)));
     for (double h : {1e-3 * limit, 0.5 * limit, limit}) {
       const ProcedureResult got =
           halfIntervalExact(Cutter::make(CutterType::Bull, R, r), 0, tilt, h);

@@ -38,8 +38,8 @@ struct BruteTorus {
   BruteTorus(double radius, double cornerRadius, double leadDeg, double h)
       : rb(radius - cornerRadius),
         rcr(cornerRadius),
-        sinRho(std::sin(std::fabs(leadDeg) * kPi / 180)),
-        cosRho(std::cos(std::fabs(leadDeg) * kPi / 180)),
+        sinRho(std::sin(degToRad(std::fabs(leadDeg)))),
+        cosRho(std::cos(degToRad(std::fabs(leadDeg)))),
         zPlane(-(rb * sinRho + rcr) + h) {}
 
   double z(double g, double f) const {
@@ -211,7 +211,7 @@ TEST(PathIntervalSeed000, Table4_Cell3_Sekine_NotReproducedFromPrintedInput_Docu
   EXPECT_NEAR(scallopHeightSekine(3, 1, 10, 1.083).value, 0.095447, 1e-6);
   EXPECT_NEAR(scallopHeightSekine(3, 1, 10, 1.0835).value, 0.095536, 1e-6);
   double reff = effectiveRadiusSekine(3, 1, 10).value;  // Eqs. (4)-(7), by hand below
-  const double t = 10 * kPi / 180, rShort = 2 * std::sin(t) + 1 - std::cos(t);
+  const double t = degToRad(10), rShort = 2 * std::sin(t) + 1 - std::cos(t);
   const double rLong = rShort / std::sin(t);
   EXPECT_NEAR(reff, (rLong * rLong + rShort * rShort) / (2 * rShort), 1e-12);
   double exactL2 = halfIntervalComputational(c.radius, c.cornerRadius, c.leadDeg, c.h).value;

@@ -113,7 +113,7 @@ TEST(PeripheralStrategy, TroughNarrowerThanTheCutterIsNonMachinable) {
 // through B's interior: every vertex is at least sqrt(a^2 + R^2) from the axis. By
 // the wedge's mirror symmetry the same holds on B with a = distance along B.
 TEST(PeripheralStrategy, CreaseBetweenLargeFacetsGougesUnseenByTheVertexTest) {
-  const double th = 30 * kPi / 180, R = 5;
+  const double th = degToRad(30), R = 5;
   const double t = std::tan(th);
   std::vector<std::array<Vec3, 3>> soup;
   addQuad(soup, {-20, 0, 0}, {0, 0, 0}, {0, 40, 0}, {-20, 40, 0});

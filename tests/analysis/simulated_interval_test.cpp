@@ -57,7 +57,7 @@ TEST(SimulatedInterval, InclinedFlatEndMillMatchesTheEllipse) {
   const double R = 3;
   for (double rho : {5.0, 10.0, 20.0, 45.0}) {
     SimulatedPass pass(Cutter::make(CutterType::Flat, R), rho, 0);
-    const double depth = R * std::sin(rho * kPi / 180);
+    const double depth = R * std::sin(degToRad(rho));
     for (double h : {0.02, 0.05, 0.2, 0.9 * depth}) {
       if (h >= depth) continue;
       const double want = R * std::sqrt(1 - std::pow((depth - h) / depth, 2));
@@ -201,8 +201,8 @@ TEST(SimulatedInterval, BeyondTheCutterIsNotReachable) {
   EXPECT_NE(s.reason.find("beyond the cutter"), std::string::npos) << s.reason;
   // Above R sin(rho) the inclined flat end mill's ellipse ends at the flank.
   SimulatedPass inclined(Cutter::make(CutterType::Flat, 3), 5, 0);
-  EXPECT_TRUE(inclined.halfIntervals(0.99 * 3 * std::sin(5 * kPi / 180)).reachable);
-  EXPECT_FALSE(inclined.halfIntervals(1.01 * 3 * std::sin(5 * kPi / 180)).reachable);
+  EXPECT_TRUE(inclined.halfIntervals(0.99 * 3 * std::sin(degToRad(5))).reachable);
+  EXPECT_FALSE(inclined.halfIntervals(1.01 * 3 * std::sin(degToRad(5))).reachable);
   // The ball's sphere ends at its equator, R above the floor.
   SimulatedPass ball(Cutter::make(CutterType::Ball, 3), 0, 0);
   EXPECT_TRUE(ball.halfIntervals(2.9).reachable);

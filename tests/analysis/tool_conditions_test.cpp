@@ -100,7 +100,7 @@ TEST(ToolConditionsSeed001, Text_FilletedLaterPassRatios) {
 // Independent derivation for F1a: la = 0.95 cos 5, R_tz = sqrt(1 - la^2),
 // sl = (2 + R_tz) * 2 acos((2 + 0.95 sin 5) / (2 + R_tz)).
 TEST(ToolConditionsSeed001, Filleted_F1aByHand) {
-  const double t = 5 * kPi / 180;
+  const double t = degToRad(5);
   const double la = 0.95 * std::cos(t), lb = 0.95 * std::sin(t);
   const double rtz = std::sqrt(1 - la * la);
   const double sl = (2 + rtz) * 2 * std::acos((2 + lb) / (2 + rtz));

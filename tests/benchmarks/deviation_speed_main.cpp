@@ -1,5 +1,5 @@
 // scallop_deviation_speed: the normal deviation against the z-map on the same path
-// (issue 34's target: design points a second at least 1/2 of the z-map's cells a
+// (the target: design points a second at least 1/2 of the z-map's cells a
 // second). The job: a ball raster over a plane, the z-map at 0.05 mm (200 x 200 cells),
 // and a design that is the plane with its vertices at those cells' centres (40 000
 // points), or ("curved") the same vertices on a gentle wave (every vertex its own
@@ -20,11 +20,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "analysis/normal_deviation.h"
+#include "base/fnv1a.h"
 #include "raycast/simulation.h"
 #include "sweep/raster.h"
 
@@ -32,13 +32,9 @@ namespace scallop {
 namespace {
 
 uint64_t hashOf(const std::vector<double>& values) {
-  uint64_t h = 1469598103934665603ull;  // FNV-1a over the values' bits
-  for (double v : values) {
-    uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    h = (h ^ bits) * 1099511628211ull;
-  }
-  return h;
+  Fnv1a hash;  // word-wise over the values' bits
+  for (double v : values) hash.addWordOf(v);
+  return hash.value;
 }
 
 int run(const std::string& mode, int repeats) {

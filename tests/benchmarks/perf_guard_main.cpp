@@ -55,9 +55,9 @@ struct GuardCase {
 };
 // B9 (10^6 short moves at full size; 4 mm: 2e4 cells, 3 443 moves) is measured only when
 // named: scripts/perf-guard.sh --case B9, for the scene's instructions a move.
-// B6 and B7 (general-profile cutters on B3's and B1's paths, issue 33) likewise, at B3's
+// B6 and B7 (general-profile cutters on B3's and B1's paths) likewise, at B3's
 // and B1's areas: scripts/perf-guard.sh --case B6 --case B7.
-// B5 (B1 with teeth) and two variants of it, for issue 35's cost of per-tooth geometry
+// B5 (B1 with teeth) and two variants of it, for the cost of per-tooth geometry
 // relative to B5: B5o with tooth 1 moved out by 3 um (both teeth cut: two groups) and
 // B5d with tooth 1 at [2, 9] um (it finishes alone) and B5r with every tooth raked
 // [5, 3] degrees, at 0.6 mm (3.6e5 cells): named only.

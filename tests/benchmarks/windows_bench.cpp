@@ -17,6 +17,7 @@
 #include <memory>
 #include <string>
 
+#include "base/fnv1a.h"
 #include "raycast/simulation.h"
 #include "raycast/zmap_caster.h"
 #include "tools/run/bench_cases.h"
@@ -36,7 +37,7 @@ void BM_CastB3Windows(benchmark::State& state) {
   uint64_t evaluations = 0, hash = 0;
   int64_t cells = 0;
   for (auto _ : state) {
-    hash = 1469598103934665603ull;  // FNV-1a over the windows' hashes
+    Fnv1a windowsHash;  // over the windows' hashes
     for (int a = 0; a < kWindows; ++a) {
       for (int c = 0; c < kWindows; ++c) {
         GridSpec window = b.grid;
@@ -46,9 +47,10 @@ void BM_CastB3Windows(benchmark::State& state) {
         ZMap map(window, b.stock.max.z);
         evaluations += castZMap(*scene, map, options.cast).exactEvaluations;
         cells += window.cells();
-        hash = (hash ^ heightsHash(map)) * 1099511628211ull;
+        windowsHash.addWord(heightsHash(map));
       }
     }
+    hash = windowsHash.value;
   }
   state.SetItemsProcessed(cells);
   state.counters["evals_per_cell"] = double(evaluations) / double(cells);

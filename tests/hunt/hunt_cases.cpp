@@ -43,7 +43,7 @@ std::string xyz(const Vec3& v, const char* sep = ",") {
 }
 
 double radians(double deg) {
-  return deg * (kPi / 180);
+  return degToRad(deg);
 }
 
 // --- Draws --------------------------------------------------------------------------
@@ -100,8 +100,8 @@ void drawCutter(std::mt19937_64& rng, HuntCase* c) {
 // cos A), xyzbc-trt (-cos C sin B, sin C sin B, cos B).
 void anglesFor(bool tableAC, const Vec3& a, double* tilt, double* spin) {
   const double t = std::atan2(std::hypot(a.x, a.y), a.z);  // acos(a.z) loses tilts near 0
-  *tilt = std::min(t * 180 / kPi, 89.999);
-  *spin = (tableAC ? std::atan2(a.x, a.y) : std::atan2(a.y, -a.x)) * 180 / kPi;
+  *tilt = std::min(radToDeg(t), 89.999);
+  *spin = radToDeg(tableAC ? std::atan2(a.x, a.y) : std::atan2(a.y, -a.x));
 }
 
 // A machine tilt turned by `turnDeg`, kept within [0, 89.999] degrees: the reader
@@ -257,8 +257,8 @@ void drawMove(std::mt19937_64& rng, HuntCase* c, double spacing) {
     case PathKind::kTcpOn:
     case PathKind::kArc: {
       anglesFor(m.tableAC, a, &m.tilt0, &m.spin0);
-      m.tilt1 = tiltAfter(m.tilt0, pick(rng, 2) ? turn * 180 / kPi : 0.0);
-      m.spin1 = m.spin0 + (pick(rng, 2) ? uniform(rng, -1, 1) * turn * 180 / kPi : 0.0);
+      m.tilt1 = tiltAfter(m.tilt0, pick(rng, 2) ? radToDeg(turn) : 0.0);
+      m.spin1 = m.spin0 + (pick(rng, 2) ? radToDeg(uniform(rng, -1, 1) * turn) : 0.0);
       m.p0 = origin;
       if (m.kind == PathKind::kTcpOn) {
         m.p1 = origin + drawMoveVector(rng, a, R, spacing);
@@ -270,7 +270,7 @@ void drawMove(std::mt19937_64& rng, HuntCase* c, double spacing) {
         const double rise = pick(rng, 2) ? 0.0 : uniform(rng, -1, 1) * R;
         m.p1 = m.centre + Vec3{rho * std::cos(th0 + sweep), rho * std::sin(th0 + sweep), 0} +
                Vec3{0, 0, origin.z + rise};
-        m.sweepDeg = sweep * 180 / kPi;
+        m.sweepDeg = radToDeg(sweep);
       }
       break;
     }
@@ -279,7 +279,7 @@ void drawMove(std::mt19937_64& rng, HuntCase* c, double spacing) {
       // (with the pivot at the origin the forward kinematics is a rotation M: q = M^T tip).
       anglesFor(m.tableAC, a, &m.tilt0, &m.spin0);
       const bool turns = pick(rng, 2) == 0;
-      m.tilt1 = tiltAfter(m.tilt0, turns ? turn * 180 / kPi : 0.0);
+      m.tilt1 = tiltAfter(m.tilt0, turns ? radToDeg(turn) : 0.0);
       m.spin1 = m.spin0;
       const Vec3 tip1 = origin + drawMoveVector(rng, a, R, spacing);
       auto column = [&](const Vec3& e) {
@@ -361,7 +361,7 @@ bool makeVariant(const HuntCase& c, const std::string& kind, Variant* out) {
     // The machine's tilt stays below 89.999 degrees (tiltAfter): a CL axis nearer the
     // horizontal has no G-code twin.
     if (m.kind != PathKind::kClStraight || m.split) return false;
-    if (std::atan2(std::hypot(m.a0.x, m.a0.y), m.a0.z) * 180 / kPi > 89.999) return false;
+    if (radToDeg(std::atan2(std::hypot(m.a0.x, m.a0.y), m.a0.z)) > 89.999) return false;
     w.kind = PathKind::kTcpOn;
     w.tableAC = true;
     anglesFor(true, m.a0, &w.tilt0, &w.spin0);

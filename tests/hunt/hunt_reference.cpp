@@ -6,6 +6,7 @@
 #include <queue>
 #include <vector>
 
+#include "base/constants.h"
 #include "sweep/machine_reference.h"
 
 namespace scallop::hunt {
@@ -83,7 +84,7 @@ bool planeSeparates(const HuntCutter& g, const Vec3& a, const Vec3& c0, const Ve
     return dot(n, p) - supportValue(g, a, n) - std::max(dot(n, c0), dot(n, c1));
   };
   constexpr int kAngles = 64;
-  const double step = 2 * 3.14159265358979323846 / kAngles;
+  const double step = 2 * kPi / kAngles;
   int best = 0;
   for (int k = 1; k < kAngles; ++k)
     if (margin(k * step) > margin(best * step)) best = k;

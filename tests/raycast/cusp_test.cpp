@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/scallop_profile.h"
+#include "base/constants.h"
 #include "raycast/simulation.h"
 #include "sweep/brute_force_reference.h"
 #include "sweep/raster.h"
@@ -47,7 +48,7 @@ TEST(Cusp, InclinedFlatEndMillMatchesEllipse) {
   // leaves the cusp h at L/2 = R sqrt(1 - ((R sin rho - h) / (R sin rho))^2).
   for (double rhoDeg : {5.0, 10.0, 20.0}) {
     for (double h : {0.02, 0.05}) {
-      const double R = 3, s = R * std::sin(rhoDeg * M_PI / 180);
+      const double R = 3, s = R * std::sin(degToRad(rhoDeg));
       const double halfL = R * std::sqrt(1 - std::pow((s - h) / s, 2));
       const double cusp = simulatedCusp(Cutter::make(CutterType::Flat, R), 2 * halfL, rhoDeg, 0.01);
       EXPECT_NEAR(cusp, h, 1e-4) << "rho=" << rhoDeg << " h=" << h;

@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include "base/constants.h"
 #include "raycast/simulation.h"
 #include "raycast/zmap.h"
 #include "raycast/zmap_caster.h"
@@ -33,7 +34,7 @@ TEST(GeneralCutterCost, DISABLED_B1RasterCellCost) {
   const char* which = std::getenv("SCALLOP_COST_CUTTER");
   if (which && std::strcmp(which, "taper_ball") == 0) {
     // Ball tip of radius 3 mm, flank at 3 degrees from the axis, 20 mm of flute.
-    const double r = 3, taper = 3 * 3.14159265358979323846 / 180;
+    const double r = 3, taper = degToRad(3);
     const double rho = r * std::cos(taper), s = r - r * std::sin(taper);
     const double top = 20;
     const std::vector<ProfileSegment> chain{{0, 0, rho, s, r},

@@ -162,7 +162,7 @@ TEST(GridFrame, TiltedRasterInItsFrameEqualsTheLevelZMap) {
     ASSERT_LT(expected.maxHeight(), -0.1);  // every cell cut
 
     const Vec3 axis = normalize(Vec3{1, 2, 0.5});
-    const double angle = 35 * kPi / 180;
+    const double angle = degToRad(35);
     const Vec3 shift{3, -2, 5};
     auto turn = [&](const Vec3& p) { return rotate(p, axis, angle) + shift; };
     ToolPath turned = path;

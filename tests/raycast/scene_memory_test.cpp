@@ -76,7 +76,7 @@ long residentKb() {
   return kb;
 }
 
-// Issue 37's kind of program, 10^5 moves: a ball R1 finishing 3-axis passes 0.1 mm apart
+// B9's kind of program, 10^5 moves: a ball R1 finishing 3-axis passes 0.1 mm apart
 // along X, a move every 0.05 mm with the tip on a wavy surface (no two consecutive moves
 // collinear, so none merge), on a 0.02 mm grid: 12.5 cells a move, one culling tile each.
 ToolPath finishingPath(int passes, int movesPerPass) {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/constants.h"
 #include "raycast/simulation.h"
 #include "sweep/raster.h"
 #include "tools/run/bench_cases.h"
@@ -52,7 +53,7 @@ TEST(StampCaster, StepFollowsTheCurvatureOfTheLowerBoundary) {
   // A tilted flat cutter's heel is a sharp edge: the error grows linearly with the step.
   const Vec3 tilted = leadTiltAxis({1, 0, 0}, 5, 0);
   EXPECT_NEAR(stampStepFor(Cutter::make(CutterType::Flat, 3), tilted, 1e-4),
-              0.5 * 1e-4 / std::tan(5 * M_PI / 180), 1e-12);
+              0.5 * 1e-4 / std::tan(degToRad(5)), 1e-12);
 }
 
 // Bull R3 r1 passes 0.8 mm apart and 0.5 mm deep over `stock`, the axis led 5 degrees.

@@ -44,7 +44,7 @@ CuttingModel teethModel(double fz, double phaseDeg = 0) {
 }
 
 Vec3 leadAxis(double leadDeg) {
-  const double l = leadDeg * kPi / 180;
+  const double l = degToRad(leadDeg);
   return {std::sin(l), 0, std::cos(l)};
 }
 
@@ -159,7 +159,7 @@ TEST(ToothSurface, BullWithLeadLeavesCirclesOfItsCorner) {
 // heights where neighbouring marks meet: those are the circles stretched by 1 + eps,
 //     peak - valley = R - sqrt(R^2 - fz^2 / (4 (1 + eps)^2))   (0.32 % below helix 0).
 TEST(ToothSurface, HelixStretchesTheMarks) {
-  const double R = 3, fz = 0.1, beta = 30 * kPi / 180, lambda = 15 * kPi / 180;
+  const double R = 3, fz = 0.1, beta = degToRad(30), lambda = degToRad(15);
   const double eps = fz * 2 * std::tan(beta) * std::sin(lambda) / (2 * kPi * R);
   const double stretched = R - std::sqrt(R * R - fz * fz / (4 * (1 + eps) * (1 + eps)));
   const SweptMove move = pass(withTeeth(Cutter::make(CutterType::Ball, R), 2, 30), 15, fz);
@@ -241,7 +241,7 @@ double runoutThreshold(double rhoF, double lambda, double fz) {
 }
 
 TEST(ToothSurface, RunoutBelowTheThresholdBothTeethMarkAboveItOne) {
-  const double R = 3, lambda = 15 * kPi / 180, fz = 0.1;
+  const double R = 3, lambda = degToRad(15), fz = 0.1;
   const double rhoStar = runoutThreshold(R, lambda, fz);
   EXPECT_NEAR(rhoStar, 3.2074e-3, 1e-7);
   const double envelopeFree = R * std::cos(lambda) - R;  // the ball's lowest point, tip z = 0
@@ -315,7 +315,7 @@ double circleFacet(double rhoF, double lambda, double fz, double rho) {
 // crossing's t, tooth k being downhill where phi(t) = psi_k mod 2 pi) just below rho*
 // (tooth 1 owns one facet per 2 fz, 5 um wide at 0.95 rho*) and just above it (none).
 TEST(ToothSurface, RunoutThresholdIsWhereTheSecondToothStopsCutting) {
-  const double R = 3, lambda = 15 * kPi / 180, fz = 0.1;
+  const double R = 3, lambda = degToRad(15), fz = 0.1;
   const double rhoStar = runoutThreshold(R, lambda, fz);
   double lo = 0.5 * rhoStar, hi = 1.5 * rhoStar;
   for (int i = 0; i < 60; ++i) {

@@ -11,13 +11,12 @@
 #include <random>
 #include <vector>
 
+#include "base/constants.h"
 #include "raycast/simulation.h"
 #include "sweep/brute_force_reference.h"
 
 namespace scallop {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double surface(double x, double y) {
   return 0.5 * std::sin(2 * kPi * x / 10) * std::cos(2 * kPi * y / 14);
@@ -28,7 +27,7 @@ Vec3 leanedNormal(double x, double y) {
   const double fy = -0.5 * (2 * kPi / 14) * std::sin(2 * kPi * x / 10) * std::sin(2 * kPi * y / 14);
   const Vec3 n = normalize(Vec3{-fx, -fy, 1});
   const Vec3 along = normalize(Vec3{1, 0, 0} - n * n.x);  // the feed in the tangent plane
-  const double lean = 5 * kPi / 180;
+  const double lean = degToRad(5);
   return normalize(n * std::cos(lean) + along * std::sin(lean));
 }
 

@@ -8,13 +8,14 @@
 
 #include <cmath>
 
+#include "base/constants.h"
 #include "sweep/cutter_shapes.h"
 #include "tests/sweep/profile_chain_check.h"
 
 namespace scallop {
 namespace {
 
-constexpr double kDeg = M_PI / 180;
+constexpr double kDeg = kRadPerDeg;
 
 void expectSameChain(const std::vector<ProfileSegment>& a, const std::vector<ProfileSegment>& b) {
   ASSERT_EQ(a.size(), b.size());

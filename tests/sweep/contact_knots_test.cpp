@@ -216,9 +216,9 @@ TEST(ContactKnots, StartIsTheSecondOrderBlendOfTheSurroundingKnots) {
     // The formula, from the knots' own doubles: the start keeps them as floats (6e-8
     // relative), so within 1e-6 in t and in the direction's angle.
     const double phi = std::atan2(sn, cs) + std::atan(turn);  // turned to first order
-    const double e = std::max(std::fabs(s.t - std::clamp(t, 0.0, 1.0)),
-                              std::fabs(std::remainder(std::atan2(s.sinPhi, s.cosPhi) - phi,
-                                                       2 * 3.14159265358979323846)));
+    const double e =
+        std::max(std::fabs(s.t - std::clamp(t, 0.0, 1.0)),
+                 std::fabs(std::remainder(std::atan2(s.sinPhi, s.cosPhi) - phi, 2 * kPi)));
     worstFormula = std::max(worstFormula, e);
     EXPECT_LE(e, 1e-6) << q.x << " " << q.y;
     if (q.x == i * h && q.y == j * h && d[0].tBeyond == 0) {

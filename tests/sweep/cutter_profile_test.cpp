@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/cutter.h"
 #include "sweep/profile_cases.h"
@@ -80,7 +81,7 @@ std::vector<ProfilePoint> densePolyline(const ProfileCase& c, int perPiece) {
       if (p.radius > 0) {
         const double a0 = std::atan2(p.s0 - p.cs, p.r0 - p.cr);
         double a1 = std::atan2(p.s1 - p.cs, p.r1 - p.cr);
-        if (a1 < a0) a1 += 2 * test::kProfilePi;
+        if (a1 < a0) a1 += 2 * kPi;
         const double a = a0 + (a1 - a0) * u;
         pts.push_back({p.cr + p.radius * std::cos(a), p.cs + p.radius * std::sin(a)});
       } else {
@@ -140,7 +141,7 @@ TEST(CutterProfile, RandomProfilesAgreeWithDenseSampling) {
       worstGrown = std::max(worstGrown, std::fabs(g.signedDistance(rho, s + delta) - (sd - delta)));
     }
     for (int i = 0; i < 40; ++i) {
-      const double ang = test::kProfilePi * (u(rng) - 0.5);
+      const double ang = kPi * (u(rng) - 0.5);
       const double nr = std::cos(ang), ns = std::sin(ang);
       const ProfilePoint q = p.support(nr, ns);
       double want = -HUGE_VAL;

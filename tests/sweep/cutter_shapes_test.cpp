@@ -11,13 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "tests/sweep/profile_chain_check.h"
 
 namespace scallop {
 namespace {
 
-constexpr double kDeg = M_PI / 180;
+constexpr double kDeg = kRadPerDeg;
 
 TEST(CutterShapes, TaperBallTangentPointAndFlank) {
   TaperBallShape shape;

@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/brute_force_reference.h"
 #include "sweep/swept_segment.h"
@@ -111,7 +112,6 @@ TEST(Cutter, ParseType) {
 TEST(Cutter, SupportPointIsTheExtremePointOfTheSolid) {
   std::mt19937_64 rng(2024);
   std::uniform_real_distribution<double> U(0, 1);
-  const double pi = 3.14159265358979323846;
   double worstValue = 0;
   for (int i = 0; i < 300; ++i) {
     const CutterType type = CutterType(i % 3);
@@ -120,8 +120,8 @@ TEST(Cutter, SupportPointIsTheExtremePointOfTheSolid) {
     const double L = i % 2 ? 0 : R * (1 + 5 * U(rng));
     const Cutter cutter = Cutter::make(type, R, r, L);
     const ref::RefCutter rc = ref::makeRefCutter(type, R, r, L);
-    const double th = i % 5 == 0 ? 0 : i % 5 == 1 ? pi / 2 : pi / 2 * U(rng);
-    const double ph = 2 * pi * U(rng);
+    const double th = i % 5 == 0 ? 0 : i % 5 == 1 ? kPi / 2 : kPi / 2 * U(rng);
+    const double ph = 2 * kPi * U(rng);
     const Vec3 axis = th == 0      ? Vec3{0, 0, 1}
                       : i % 5 == 1 ? Vec3{std::cos(ph), std::sin(ph), 0}
                                    : normalize(Vec3{std::sin(th) * std::cos(ph),
@@ -162,7 +162,7 @@ TEST(Cutter, SupportPointIsTheExtremePointOfTheSolid) {
     for (int j = 0; j < 400; ++j) {
       const double s = j % 4 == 0 ? 0 : j % 4 == 1 ? rc.L : rc.L * U(rng);
       const double rho = j % 4 < 2 ? ref::profile(rc, s) * std::sqrt(U(rng)) : ref::profile(rc, s);
-      const double ang = 2 * pi * U(rng);
+      const double ang = 2 * kPi * U(rng);
       const Vec3 q = axis * s + u * (rho * std::cos(ang)) + v * (rho * std::sin(ang));
       EXPECT_GE(value, dot(dir, q) - 1e-12 * scale) << "case " << i << " sample " << j;
     }

@@ -51,7 +51,7 @@ FaceCase randomFaceCase(std::mt19937_64& rng, int k, double maxLeanDeg, double m
   const Vec3 p0{2 * (u(rng) - 0.5), 2 * (u(rng) - 0.5), u(rng) - 0.5};
   const Vec3 p1 = p0 + Vec3{feed * std::cos(heading), feed * std::sin(heading),
                             k % 4 == 1 ? 0.3 * feed * (u(rng) - 0.5) : 0};
-  const double lean = maxLeanDeg * kPi / 180 * u(rng);
+  const double lean = degToRad(maxLeanDeg) * u(rng);
   if (k % 5 == 4) {
     const RotaryKinematics kin = k % 2 ? RotaryKinematics::TableAC : RotaryKinematics::TableBC;
     const double tilt0 = lean * (u(rng) < 0.5 ? -1 : 1), spin0 = 2 * kPi * u(rng);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "base/constants.h"
 #include "base/vec3.h"
 #include "sweep/cutter.h"
 #include "sweep/cutter_profile.h"
@@ -95,11 +96,6 @@ class ChainWalk {
   double r_ = 0, s_ = 0, a_ = 0;
 };
 
-constexpr double kProfilePi = 3.14159265358979323846;
-inline double degToRad(double deg) {
-  return deg * kProfilePi / 180;
-}
-
 // Kind k % 7: tapered ball, tapered bull, cone (sharp or flat tip), barrel, lens, oval,
 // free chain. Radii about 1 to 6 mm, flutes up to ~25 mm.
 inline ProfileCase randomProfileCase(std::mt19937_64& rng, int k) {
@@ -109,7 +105,7 @@ inline ProfileCase randomProfileCase(std::mt19937_64& rng, int k) {
     case 0: {  // tapered ball: ball tip, flank at a half-angle
       ChainWalk w("taper_ball");
       const double rt = in(0.5, 3), taper = degToRad(in(1, 15));
-      w.arc(rt, kProfilePi / 2 - taper);
+      w.arc(rt, kPi / 2 - taper);
       w.lineTo(in(8, 25));
       return w.done();
     }
@@ -117,7 +113,7 @@ inline ProfileCase randomProfileCase(std::mt19937_64& rng, int k) {
       ChainWalk w("taper_bull");
       const double rb = in(0.3, 3), rc = in(0.3, 2), taper = degToRad(in(1, 20));
       w.line(rb);
-      w.arc(rc, kProfilePi / 2 - taper);
+      w.arc(rc, kPi / 2 - taper);
       w.lineTo(in(8, 20));
       return w.done();
     }
@@ -125,10 +121,10 @@ inline ProfileCase randomProfileCase(std::mt19937_64& rng, int k) {
       ChainWalk w("cone");
       const double half = degToRad(in(15, 75));
       if (u(rng) < 0.5) w.line(in(0.1, 1));
-      w.turn(kProfilePi / 2 - half);
+      w.turn(kPi / 2 - half);
       w.line(in(2, 6));
       if (u(rng) < 0.5) {
-        w.turn(kProfilePi / 2);
+        w.turn(kPi / 2);
         w.line(in(2, 8));
       }
       return w.done();
@@ -139,7 +135,7 @@ inline ProfileCase randomProfileCase(std::mt19937_64& rng, int k) {
       w.arc(rt, degToRad(in(70, 88)));
       const double h = in(4, 15), c = std::cos(w.angle()) - h / rf;
       w.arc(rf, std::acos(std::max(-1.0, c)));
-      if (w.angle() < kProfilePi / 2 && u(rng) < 0.5) w.line(in(1, 5));
+      if (w.angle() < kPi / 2 && u(rng) < 0.5) w.line(in(1, 5));
       return w.done();
     }
     case 4: {  // lens: a large tip arc centred on the axis, a corner, a flank
@@ -180,8 +176,8 @@ inline ProfileCase randomProfileCase(std::mt19937_64& rng, int k) {
           ok = w.rho() > 0.3;
         }
         if (!ok) continue;
-        if (w.angle() < kProfilePi / 2 && u(rng) < 0.5) {
-          w.turn(kProfilePi / 2);
+        if (w.angle() < kPi / 2 && u(rng) < 0.5) {
+          w.turn(kPi / 2);
           w.line(in(1, 6));
         }
         return w.done();
@@ -204,6 +200,31 @@ inline Vec3 randomMoveEnd(std::mt19937_64& rng, int k) {
     default:
       return {0, 0, 0};
   }
+}
+
+// The barrel the contact-curvature and profile-move tests share, from its definition: in
+// the (rho, s) half-plane a line from the tip (0, 0) to P1, the form arc of radius 250 mm
+// centred at (-245, 15) (across the axis) from P1 to (5, 15), whose normals span
+// -3..0 deg from +rho, and the flank rho = 5 up to s = 30.
+constexpr double kBarrelFormRadius = 250, kBarrelFormCentreRho = -245, kBarrelFormCentreS = 15;
+constexpr double kBarrelFormSpanDeg = 3;
+
+// P1: where the tip's line meets the form arc, mm.
+inline void barrelP1(double* rho, double* s) {
+  const double span = degToRad(kBarrelFormSpanDeg);
+  *rho = kBarrelFormCentreRho + kBarrelFormRadius * std::cos(span);
+  *s = kBarrelFormCentreS - kBarrelFormRadius * std::sin(span);
+}
+
+// The barrel as a cutter of the general kernel.
+inline Cutter barrelCutter() {
+  double p1Rho = 0, p1S = 0;
+  barrelP1(&p1Rho, &p1S);
+  std::vector<ProfileSegment> chain(3);
+  chain[0] = {0, 0, p1Rho, p1S, 0};
+  chain[1] = {p1Rho, p1S, 5, 15, kBarrelFormRadius};
+  chain[2] = {5, 15, 5, 30, 0};
+  return cutterOfChain(CutterType::Profile, chain, "test");
 }
 
 }  // namespace scallop::test

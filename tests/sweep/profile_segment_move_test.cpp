@@ -17,24 +17,20 @@
 #include "sweep/raster.h"
 #include "sweep/swept_move.h"
 #include "sweep/swept_segment.h"
+#include "tests/sweep/profile_cases.h"
 
 namespace scallop {
 namespace {
 
-// The barrel of tests/analysis/contact_curvature_test.cpp: a line from the tip to P1,
-// the form arc of radius 250 mm centred at (rho, s) = (-245, 15) up to (5, 15), the
-// flank rho = 5 up to s = 30.
-constexpr double kFormRadius = 250, kFormCentreRho = -245, kFormCentreS = 15;
+// The barrel of tests/sweep/profile_cases.h (test::barrelCutter).
+constexpr double kFormRadius = test::kBarrelFormRadius;
+constexpr double kFormCentreRho = test::kBarrelFormCentreRho,
+                 kFormCentreS = test::kBarrelFormCentreS;
 
 TEST(ProfileSegmentMove, BarrelAlongAMoveMatchesBruteForce) {
-  const double span = 3 * kPi / 180;
-  const double p1Rho = kFormCentreRho + kFormRadius * std::cos(span);
-  const double p1S = kFormCentreS - kFormRadius * std::sin(span);
-  std::vector<ProfileSegment> chain(3);
-  chain[0] = {0, 0, p1Rho, p1S, 0};
-  chain[1] = {p1Rho, p1S, 5, 15, kFormRadius};
-  chain[2] = {5, 15, 5, 30, 0};
-  const Cutter barrel = cutterOfChain(CutterType::Profile, chain, "test");
+  double p1Rho = 0, p1S = 0;
+  test::barrelP1(&p1Rho, &p1S);
+  const Cutter barrel = test::barrelCutter();
   ref::RefCutter rc;
   rc.R = 5;
   rc.L = 30;

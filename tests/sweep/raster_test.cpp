@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/swept_segment.h"
 
@@ -12,11 +13,11 @@ namespace {
 
 TEST(Raster, LeadOnlyIsAPlainRotationTowardsTheFeed) {
   const Vec3 a = leadTiltAxis({1, 0, 0}, 5, 0);
-  EXPECT_NEAR(a.x, std::sin(5 * M_PI / 180), 1e-15);
+  EXPECT_NEAR(a.x, std::sin(degToRad(5)), 1e-15);
   EXPECT_NEAR(a.y, 0, 1e-15);
-  EXPECT_NEAR(a.z, std::cos(5 * M_PI / 180), 1e-15);
+  EXPECT_NEAR(a.z, std::cos(degToRad(5)), 1e-15);
   const Vec3 t = leadTiltAxis({1, 0, 0}, 0, 10);  // tilt towards c = z x f = +y
-  EXPECT_NEAR(t.y, std::sin(10 * M_PI / 180), 1e-15);
+  EXPECT_NEAR(t.y, std::sin(degToRad(10)), 1e-15);
 }
 
 TEST(Raster, PassesDepthAndExtent) {
@@ -38,7 +39,7 @@ TEST(Raster, PassesDepthAndExtent) {
   EXPECT_NEAR(lowest, -0.5, 1e-12);
   // For a torus tilted by rho the lowest point is Rb sin(rho) + r (1 - cos(rho)) below
   // the tip (the centre circle's lowest point, then down by r).
-  const double rho = 5 * M_PI / 180;
+  const double rho = degToRad(5);
   EXPECT_NEAR(first.from.tip.z, -0.5 + 2 * std::sin(rho) + 1 * (1 - std::cos(rho)), 1e-12);
 }
 

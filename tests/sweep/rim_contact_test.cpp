@@ -241,7 +241,7 @@ TurnCase randomTurningCase(std::mt19937_64& rng, int k, bool shortFlute, double 
   const double r = type == CutterType::Bull ? R * (0.15 + 0.7 * u(rng)) : R;
   const double L = shortFlute ? r * (1 + 0.999 * u(rng)) : R * (2 + 3 * u(rng));
   Vec3 a0, a1;
-  const double minPolar = minPolarDeg * kPi / 180, maxPolar = 80 * kPi / 180;
+  const double minPolar = degToRad(minPolarDeg), maxPolar = degToRad(80);
   for (;;) {
     a0 = unitFromAngles(minPolar + (maxPolar - minPolar) * u(rng), 2 * kPi * u(rng));
     a1 = unitFromAngles(minPolar + (maxPolar - minPolar) * u(rng), 2 * kPi * u(rng));
@@ -278,7 +278,7 @@ TurnCase camLikeCase(std::mt19937_64& rng, int k, Segment segment = Segment::Any
   const double L = R * (2 + 2 * u(rng));
   const double heading = 2 * kPi * u(rng);
   const Vec3 feed{std::cos(heading), std::sin(heading), 0}, side{-feed.y, feed.x, 0};
-  const double lead = (2 + 18 * u(rng)) * kPi / 180, tilt = (u(rng) - 0.5) * 10 * kPi / 180;
+  const double lead = degToRad(2 + 18 * u(rng)), tilt = degToRad((u(rng) - 0.5) * 10);
   const Vec3 a0 = normalize(feed * std::tan(lead) + side * std::tan(tilt) + Vec3{0, 0, 1});
   const double turn = 0.02 * u(rng) + 1e-6;
   const Vec3 w = normalize(cross(a0, Vec3{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5}));
@@ -854,8 +854,7 @@ TEST(RimContact, ShortFlutesLeaningAlongTheLine) {
     TurnCase c;
     std::vector<Line> lines;
   };
-  const double d80 = 80 * kPi / 180, d78 = 78 * kPi / 180, d60 = 60 * kPi / 180,
-               d58 = 58 * kPi / 180;
+  const double d80 = degToRad(80), d78 = degToRad(78), d60 = degToRad(60), d58 = degToRad(58);
   const Case cases[] = {
       {makeCase(CutterType::Ball, 1, 0, 1, {0, 0, 0}, {0.1, 0, 0},
                 {std::sin(d80), 0, std::cos(d80)}, {std::sin(d78), 0.01, std::cos(d78)}),

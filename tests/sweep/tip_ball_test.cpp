@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <random>
 
+#include "base/constants.h"
 #include "sweep/certified_search.h"
 #include "sweep/cutter_shapes.h"
 #include "sweep/pose_curve.h"
@@ -34,7 +35,7 @@ TEST(TipBall, FoundOnBallTippedProfilesOnly) {
   const TipBall b = tipBallOf(taperBall(1, 5));
   ASSERT_TRUE(b.valid);
   EXPECT_NEAR(b.radius, 1, 1e-12);
-  const double beta = 5 * M_PI / 180;  // the flank is tangent at (r cos b, r (1 - sin b))
+  const double beta = degToRad(5);  // the flank is tangent at (r cos b, r (1 - sin b))
   EXPECT_NEAR(b.splitS, 1 - std::sin(beta), 1e-9);
   EXPECT_NEAR(b.splitWidth, std::cos(beta), 1e-9);
   EXPECT_TRUE(tipBallOf(taperBarrel()).valid);
@@ -65,8 +66,8 @@ TEST(TipBall, HeightsAgreeWithCertifiedSearch) {
   double worst = 0;
   for (int k = 0; k < 24; ++k) {
     const Cutter c = k % 3 == 2 ? taperBarrel() : taperBall(0.5 + u01(rng), 1 + 10 * u01(rng));
-    const double lead = (k % 4) * 20 * M_PI / 180, turn = k % 2 ? 0.6 * u01(rng) : 0;
-    const double phi = 2 * M_PI * u01(rng);
+    const double lead = degToRad((k % 4) * 20), turn = k % 2 ? 0.6 * u01(rng) : 0;
+    const double phi = 2 * kPi * u01(rng);
     const Vec3 a0{std::sin(lead) * std::cos(phi), std::sin(lead) * std::sin(phi), std::cos(lead)};
     const double lead1 = lead + turn;
     const Vec3 a1{std::sin(lead1) * std::cos(phi), std::sin(lead1) * std::sin(phi),

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 
 namespace scallop {
@@ -44,7 +45,7 @@ TEST(ToolPathSweep, RapidsAreDroppedAndCollinearMovesMerged) {
 
 TEST(ToolPathSweep, TurningMoveIsOnePrimitiveBelowEveryStamp) {
   const Cutter bull = Cutter::make(CutterType::Bull, 3, 1);
-  const double phi = 2.0 * M_PI / 180;  // the axis turns by 2 degrees along the move
+  const double phi = degToRad(2.0);  // the axis turns by 2 degrees along the move
   const Vec3 a0{0, 0, 1}, a1{std::sin(phi), 0, std::cos(phi)};
   const Vec3 p0{0, 0, 0}, p1{1, 0.3, -0.1};
   ToolPath path;

@@ -56,7 +56,7 @@ inline void checkAgainstReference(const Cutter& c, int n, bool turns, std::mt199
   const bool counter = n % 3 == 2;
   const SweptMove move = sweepOne(c, p0, p1, a0, a1, teethModel(fz, phaseDeg, counter));
   const ref::ToothMove m{
-      p0, p1, a0, a1, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (flutes * fz), counter};
+      p0, p1, a0, a1, degToRad(phaseDeg), 2 * kPi * length(p1 - p0) / (flutes * fz), counter};
   for (int q = 0; q < 4; ++q) {
     const double t = u(rng), ang = 2 * kPi * u(rng), rho = 1.05 * R * std::sqrt(u(rng));
     const Vec3 at = p0 + (p1 - p0) * t;

@@ -143,7 +143,7 @@ TEST(ToothGeometry, OffsetsPitchAndDirectionAgreeWithTheReference) {
     const auto moves = sweepMoves(c, p0, p1, a0, a1, teethModel(fz, phaseDeg, counter));
     ASSERT_EQ(moves.size(), 1u);
     const ref::ToothMove m{
-        p0, p1, a0, a1, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (flutes * fz), counter};
+        p0, p1, a0, a1, degToRad(phaseDeg), 2 * kPi * length(p1 - p0) / (flutes * fz), counter};
     for (int q = 0; q < 3; ++q) {
       const double t = u(rng), ang = 2 * kPi * u(rng), rho = R * std::sqrt(u(rng));
       const Vec3 at = p0 + (p1 - p0) * t;
@@ -214,7 +214,7 @@ TEST(ToothGeometry, CounterClockwiseIsTheMirroredClockwiseBitForBit) {
 // alone, 2 fz apart. Below it tooth 0 cuts too, and the heights are lower somewhere.
 // Either spindle direction: at a pass the edge is in the plane of e1 either way.
 TEST(ToothGeometry, OneToothLowerThanTheThresholdFinishesAlone) {
-  const double R = 3, lambda = 15 * kPi / 180, fz = 0.1, phi0 = 0.3;
+  const double R = 3, lambda = degToRad(15), fz = 0.1, phi0 = 0.3;
   const double sl = std::sin(lambda), cl = std::cos(lambda);
   const double threshold = (std::sqrt(R * R * cl * cl + fz * fz * sl * sl) - R * cl) / (sl * sl);
   EXPECT_NEAR(threshold, 1.7254e-3, 1e-6);
@@ -225,7 +225,7 @@ TEST(ToothGeometry, OneToothLowerThanTheThresholdFinishesAlone) {
       Cutter c = Cutter::make(CutterType::Ball, R, 0, 4 * R);
       c.teeth = CutterTeeth::make(2, 0, 0, 0, R);
       c.teeth.editToothOffsets() = {{0, 0}, {0, delta}};
-      const auto moves = sweepMoves(c, p0, p1, a, a, teethModel(fz, phi0 * 180 / kPi, ccw));
+      const auto moves = sweepMoves(c, p0, p1, a, a, teethModel(fz, radToDeg(phi0), ccw));
       double worst = 0, below = 0;
       for (int i = 0; i <= 40; ++i) {
         const double x = -0.3 + 0.6 * i / 40 + 0.0013;
@@ -292,8 +292,7 @@ TEST(ToothGeometry, AnEdgeMovedOutStartsThatFarFromTheAxis) {
     const Vec3 p0{0, 0, 0.4}, p1{ramp ? 0.05 : 0.0, 0, -0.3};
     const double fz = 0.05, phaseDeg = 30;
     const auto moves = sweepMoves(c, p0, p1, a, a, teethModel(fz, phaseDeg));
-    const ref::ToothMove m{
-        p0, p1, a, a, phaseDeg * kPi / 180, 2 * kPi * length(p1 - p0) / (3 * fz)};
+    const ref::ToothMove m{p0, p1, a, a, degToRad(phaseDeg), 2 * kPi * length(p1 - p0) / (3 * fz)};
     for (double d : {0.2, 0.6, 0.9, 1.2, 3.0, 8.0}) {
       const double ang = 2 * kPi * u(rng), dist = d * std::abs(dr);
       const double x = p1.x + dist * std::cos(ang), y = p1.y + dist * std::sin(ang);

@@ -127,7 +127,7 @@ TEST(ToothRake, LagPutsThePointOnTheRakeFace) {
     const double d = lag.offset(h);
     if (std::fabs(d) > 0.9 * rho) continue;
     const double l = lag(rho, h);
-    const double gr = rake.radialDeg * kPi / 180, ga = rake.axialDeg * kPi / 180;
+    const double gr = degToRad(rake.radialDeg), ga = degToRad(rake.axialDeg);
     EXPECT_NEAR(rho * std::sin(l),
                 (rho * std::cos(l) - rho0) * std::tan(gr) + (h - h0) * std::tan(ga), 1e-13)
         << n;

@@ -16,12 +16,13 @@
 #include <random>
 #include <vector>
 
+#include "base/constants.h"
+
 namespace scallop {
 namespace ref {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Newton's answer is a crossing when the edge point is this close to the line, mm.
 constexpr double kRootTolerance = 1e-12;
 // Cells smaller than this (B, mm) with no root are near-crossings.
@@ -119,8 +120,8 @@ struct Rake {
   double gr = 0, ga = 0, rho0 = 0, h0 = 0;
   Rake(const ToothRake& r, const EdgeSpot& p0)
       : on(r.axialDeg != 0 || r.radialDeg != 0),
-        gr(r.radialDeg * kPi / 180),
-        ga(r.axialDeg * kPi / 180),
+        gr(degToRad(r.radialDeg)),
+        ga(degToRad(r.axialDeg)),
         rho0(p0.rho),
         h0(p0.h) {}
   double lag(const EdgeSpot& p) const {
@@ -179,7 +180,7 @@ struct Edges {
     for (int k = 0; k < flutes; ++k) {
       const bool pitch = !c.teeth.toothAnglesDeg().empty(),
                  offsets = !c.teeth.toothOffsets().empty();
-      psi.push_back(pitch ? c.teeth.toothAnglesDeg()[size_t(k)] * kPi / 180 : 2 * kPi * k / flutes);
+      psi.push_back(pitch ? degToRad(c.teeth.toothAnglesDeg()[size_t(k)]) : 2 * kPi * k / flutes);
       dr.push_back(offsets ? c.teeth.toothOffsets()[size_t(k)].radial : 0);
       da.push_back(offsets ? c.teeth.toothOffsets()[size_t(k)].axial : 0);
       drMost = std::max(drMost, std::fabs(dr.back()));
@@ -193,9 +194,9 @@ struct Edges {
     } else {
       turn = 0;
     }
-    const double beta = c.teeth.helixDeg * kPi / 180;
+    const double beta = degToRad(c.teeth.helixDeg);
     slope = std::tan(beta) / c.radius;
-    psiR = c.teeth.runoutPhaseDeg * kPi / 180;
+    psiR = degToRad(c.teeth.runoutPhaseDeg);
     U = edgeLength(c);
     for (int k = 0; k < flutes; ++k) {
       const bool spans = !c.teeth.edgeSpans().empty();
@@ -517,7 +518,7 @@ double flatRampClosedForm(const Cutter& c, const ToothMove& m, double x, double 
   for (int k = 0; k < c.teeth.flutes; ++k) {
     auto g = [&](double t, double& radius) {
       const double phi = m.phaseStart + m.phaseRate * t;
-      const double ang = c.teeth.runoutPhaseDeg * kPi / 180 - phi;
+      const double ang = degToRad(c.teeth.runoutPhaseDeg) - phi;
       // e1 = X, e2 = Y for the vertical axis.
       const double cx = m.p0.x + (m.p1.x - m.p0.x) * t + c.teeth.runout * std::cos(ang);
       const double cy = m.p0.y + (m.p1.y - m.p0.y) * t + c.teeth.runout * std::sin(ang);
@@ -596,7 +597,7 @@ TEST(ToothReference, FlatEndMillRampAgreesWithTheDiscsClosedForm) {
 //     c_n.z - sqrt(R^2 - (x - c_n.x)^2)
 // over the passes n (phi(t_n) = psi_k mod 2 pi), while |x - c_n.x| <= R cos(lambda).
 TEST(ToothReference, BallLeadCentreLineIsTheMeridianArcs) {
-  const double R = 3, lambda = 15 * kPi / 180, fz = 0.1;
+  const double R = 3, lambda = degToRad(15), fz = 0.1;
   const int flutes = 2;
   const Cutter c = withTeeth(Cutter::make(CutterType::Ball, R, 0, 4), flutes, 0, 0, 0);
   const Vec3 a{std::sin(lambda), 0, std::cos(lambda)};

@@ -57,7 +57,7 @@ RandomCase randomCase(std::mt19937_64& rng, int n) {
   const double polar = 0.25 * kPi * u(rng), azimuth = 2 * kPi * u(rng);
   rc.a0 = {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
            std::cos(polar)};
-  rc.a1 = turning(n) ? turnedAxis(rng, rc.a0, (10 + 10 * u(rng)) * kPi / 180) : rc.a0;
+  rc.a1 = turning(n) ? turnedAxis(rng, rc.a0, degToRad(10 + 10 * u(rng))) : rc.a0;
   const double len = 0.5 + 2 * u(rng), dir = 2 * kPi * u(rng);
   const double climb = n % 4 == 0 ? 0 : n % 4 == 3 ? len * (u(rng) - 0.5) : 0.2 * (u(rng) - 0.5);
   rc.p0 = {3 * (u(rng) - 0.5), 3 * (u(rng) - 0.5), -1 + u(rng)};
@@ -88,7 +88,7 @@ ref::ToothMove refMove(const RandomCase& rc) {
           rc.p1,
           rc.a0,
           rc.a1,
-          rc.phaseDeg * kPi / 180,
+          degToRad(rc.phaseDeg),
           2 * kPi * length(rc.p1 - rc.p0) / (rc.cutter.teeth.flutes * rc.fz)};
 }
 
@@ -311,8 +311,8 @@ TEST(ToothSweep, SpindleAngleRunsAlongThePathRapidsIncluded) {
   ASSERT_EQ(moves.size(), 2u);
   const double rate = 2 * kPi / (3 * fz);  // rad per mm
   const double phiAtP3 =
-      phaseDeg * kPi / 180 + rate * (length(p1 - p0) + length(p2 - p1) + length(p3 - p2));
-  const ref::ToothMove m0{p0, p1, a, a, phaseDeg * kPi / 180, rate * length(p1 - p0)};
+      degToRad(phaseDeg) + rate * (length(p1 - p0) + length(p2 - p1) + length(p3 - p2));
+  const ref::ToothMove m0{p0, p1, a, a, degToRad(phaseDeg), rate * length(p1 - p0)};
   const ref::ToothMove m1{p3, p4, a, a, phiAtP3, 2 * kPi * length(p4 - p3) / (3 * 0.07)};
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0, 1);

@@ -31,7 +31,7 @@ void printTable(std::FILE* out, const json& doc) {
                  c["evals_per_cell"].get<double>(), c["seconds"].get<double>(),
                  c["mcells_per_s"].get<double>(), c["peak_rss_mb"].get<double>(), speedup.c_str());
   }
-  // The scene: build time against the cast's, moves a second, bytes a move (issue 37).
+  // The scene: build time against the cast's, moves a second, bytes a move.
   std::fprintf(out, "\n%-4s %9s %9s %12s %12s %14s\n", "case", "scene s", "cast s", "moves/s",
                "scene B/move", "peak-map B/mv");
   for (const json& c : doc["cases"])
@@ -81,6 +81,7 @@ int runBenchCommand(BenchSettings settings, bool json) {
 }
 
 constexpr const char* kBenchHelp =
+    "Run the standard performance cases and print a table.\n"
     "Run the standard performance cases with exact heights and print a table (or JSON):\n"
     "  B1 raster: stock 20 x 20 mm, bull R=3 r=1, lead 5 deg, step-over 0.8 mm, one move\n"
     "     per pass, grid spacing 1 um (4e8 cells);\n"

@@ -172,6 +172,7 @@ Command addCollectCommand(CLI::App& parent, CommonOptions&) {
   auto columnsText = std::make_shared<std::string>();
   CLI::App* app = parent.add_subcommand(
       "collect",
+      "Gather many runs' report.json files into one CSV table.\n"
       "Gather the report.json files of many runs (a parameter study: one output folder\n"
       "per job) into one CSV table, a row per run: run (the folder), job, the job's inputs\n"
       "flattened (tool.radius, stock.min[0], path.raster.step_over, ...; mm and degrees as\n"

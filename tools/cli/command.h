@@ -24,6 +24,11 @@ struct Command {
 // Adds `--threads` with the standard wording to a computing command.
 void addThreadsOption(CLI::App& command, CommonOptions& common);
 
+// Makes `scallop --help` list each command on one line: the first line of its
+// description, which is therefore a whole sentence saying what the command does (the
+// rest of the description is for `scallop COMMAND --help`). Call before adding commands.
+void useOneLineCommandList(CLI::App& app);
+
 Command addSimulateCommand(CLI::App& parent, CommonOptions& common);
 Command addSurfaceCommand(CLI::App& parent, CommonOptions& common);
 Command addGougeCommand(CLI::App& parent, CommonOptions& common);

@@ -13,6 +13,7 @@
 #include "tools/cli/command.h"
 #include "tools/io/file_names.h"
 #include "tools/io/height_export.h"
+#include "tools/io/height_formats.h"
 #include "tools/run/map_export.h"
 
 namespace scallop {
@@ -55,10 +56,9 @@ int writeHillshade(const ExportArgs& args, const ZMap& map) {
 
 // The usage errors (exit 2) of --to, --profile and --hillshade; empty when none.
 std::string usageError(const ExportArgs& args, const std::string& ext) {
-  const bool known = ext == ".x3p" || ext == ".png" || ext == ".tif" || ext == ".tiff" ||
-                     ext == ".gsf" || ext == ".exr" || ext == ".csv";
-  if (!known)
-    return "--to: expected a file name ending in .x3p, .png, .tif, .tiff, .gsf, .exr or .csv";
+  if (!findHeightFormat(args.to) && ext != ".csv")
+    return "--to: expected a file name ending in " + heightExtensions(false) +
+           " (heights) or .csv (a profile)";
   if (ext == ".csv" && args.profile.empty())
     return "--to .csv writes a profile: give --profile x0 y0 x1 y1";
   if (ext != ".csv" && !args.profile.empty()) return "--profile goes with a .csv output only";
@@ -95,7 +95,8 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
   auto args = std::make_shared<ExportArgs>();
   CLI::App* app = parent.add_subcommand(
       "export",
-      "Convert a height map written by scallop (FILE.gsf or FILE.exr) for metrology software.\n"
+      "Convert a height map to X3P, TIFF, PNG or a CSV profile.\n"
+      "Convert a height map (FILE.gsf, FILE.exr or FILE.x3p) for metrology software.\n"
       "The format follows --to's extension:\n"
       "  .x3p         ISO 25178-72 / ISO 5436-2 X3P (zip: main.xml, bindata/data.bin float64\n"
       "               heights in m, MD5 checksums); Gwyddion, MountainsMap, openGPS read it\n"
@@ -111,7 +112,7 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
       "that micrometre scallops and feed marks show), the factor and the light in the\n"
       "legend, with a scale bar; --region crops it. Maps larger than 1600 cells a side\n"
       "are reduced (block minimum).");
-  app->add_option("FILE", args->file, "Height map: .gsf or .exr")->required();
+  app->add_option("FILE", args->file, "Height map: .gsf, .exr or .x3p")->required();
   app->add_option("--to", args->to, "Output file; its extension picks the format")->required();
   app->add_option("--profile", args->profile, "x0 y0 x1 y1: the profile line for .csv, mm")
       ->expected(4)

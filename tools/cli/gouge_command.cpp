@@ -50,6 +50,7 @@ int runGougeCommand(GougeSettings a, bool json) {
 }
 
 constexpr const char* kGougeHelp =
+    "Seed 004's 5-axis flank-milling strategy on an STL, checked exactly.\n"
     "Seed 004's 5-axis peripheral (flank) milling strategy on an STL surface with a flat\n"
     "(cylinder) cutter, then the exact check of every posture it accepts.\n"
     "Strategy (seed 004 section 2): cc-points where slicing planes (spaced by the effective\n"

@@ -116,6 +116,7 @@ int runInterval(const IntervalArgs& args) {
 }
 
 constexpr const char* kIntervalHelp =
+    "Path interval (step-over) for a scallop height, by every procedure.\n"
     "Path interval (half step-over L/2, mm) for a scallop height h by every procedure of\n"
     "the seeds (computational: seed 000 Fig. 1; sekine, redonnet, bedi: seed 000 Eqs.\n"
     "(4)-(11); ball: seed 001 Eq. (1)) and by the two that take any cutter, lead and tilt\n"

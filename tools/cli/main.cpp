@@ -13,9 +13,11 @@
 #include <exception>
 #include <memory>
 #include <new>
+#include <string>
 #include <vector>
 
 #include "base/input_error.h"
+#include "base/version.h"
 #include "tools/cli/command.h"
 #include "tools/cli/interrupt.h"
 
@@ -23,13 +25,12 @@ namespace {
 
 constexpr const char* kDescription =
     "scallop: exact machined-surface topography of milling tool paths.\n"
-    "Sweeps milling cutters of any convex profile (ball, flat, bull, tapered, cone, barrel,\n"
-    "APT CUTTER) along straight moves and arcs, with any tool axis (5-axis, machines), as\n"
-    "whole solids or as teeth, and computes on a z-map grid (or a frame's) the exact lowest\n"
-    "point of the swept solids (double precision, 1e-6 mm). Lengths in mm, angles in\n"
-    "degrees. Exit status: 0 success, 1 bad input, 2 usage error, 3 internal error,\n"
-    "130 interrupted (Ctrl-C; no partial outputs are left). `scallop COMMAND --help` for\n"
-    "more; start with `scallop simulate` (a built-in job) and docs/CONVENTIONS.md.";
+    "Sweeps milling cutters along tool paths with any tool axis and computes on a grid the\n"
+    "exact lowest point of the swept solids (double precision, 1e-6 mm). Lengths in mm,\n"
+    "angles in degrees. Exit status: 0 success, 1 bad input, 2 usage error, 3 internal\n"
+    "error, 130 interrupted (Ctrl-C; no partial outputs are left).\n"
+    "Start with `scallop simulate` (a built-in job); `scallop COMMAND --help` has every\n"
+    "option with its unit, docs/CONVENTIONS.md every job key.";
 
 }  // namespace
 
@@ -43,6 +44,9 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 4 << 20);
 #endif
   CLI::App app{kDescription, "scallop"};
+  app.set_version_flag("--version", std::string("scallop ") + scallop::kScallopVersion,
+                       "Print the version and exit");
+  scallop::useOneLineCommandList(app);
   app.require_subcommand(1);
   scallop::CommonOptions common;
 

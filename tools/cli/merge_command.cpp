@@ -116,6 +116,7 @@ Command addMergeCommand(CLI::App& parent, CommonOptions&) {
   auto args = std::make_shared<MergeArgs>();
   CLI::App* app = parent.add_subcommand(
       "merge",
+      "Assemble the bands of `simulate --bands` into one run's outputs.\n"
       "Assemble DIR/band-K.raw files of `simulate --bands K:M` runs into DIR/heights.exr\n"
       "(tiled OpenEXR, float32 Z in mm), heights.gsf (metres), preview.png and report.json,\n"
       "as one `simulate --tiled` run would write them. Every band is checked first: a\n"

@@ -12,6 +12,7 @@
 #include "tools/cli/interrupt.h"
 #include "tools/cli/progress.h"
 #include "tools/io/job.h"
+#include "tools/io/job_cutter_shapes.h"
 #include "tools/run/job_loader.h"
 #include "tools/run/report.h"
 #include "tools/run/simulation_plan.h"
@@ -135,28 +136,35 @@ int runSimulate(const SimulateArgs& args) {
 
 namespace {
 
-constexpr const char* kSimulateHelp =
-    "Simulate a job file and write DIR/heights.exr (float32 channel Z, mm), DIR/heights.gsf\n"
-    "(Gwyddion, metres), DIR/preview.png (shaded colour map with scale) and\n"
-    "DIR/report.json (inputs, grid, timings, measurements).\n"
-    "Without JOB, runs the built-in default job (see --print-default-job):\n"
-    "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
-    "Job file keys (docs/CONVENTIONS.md has each one, with units and ranges):\n"
-    "  tool{type, ...} or tools{\"N\": {...}} (G-code T words): type ball|flat|bull (radius,\n"
-    "    corner_radius), taper_ball|taper_bull|cone|barrel|taper_barrel|oval|lens|profile|apt\n"
-    "    (`scallop cutter TOOL --svg F` draws one); flute_length; teeth: flutes, helix_deg,\n"
-    "    runout_mm, runout_phase_deg, tooth_offsets, tooth_angles_deg, edge_span,\n"
-    "    tooth_edge_spans, rake_deg, tooth_rakes_deg (docs/teeth.md)\n"
-    "  cutting{model (envelope|teeth), feed_per_tooth (mm), phase_deg}, spindle (cw|ccw)\n"
-    "  stock{min,max} | stock{stl} | stock{gsf}    grid{spacing, frame{origin,u,normal,size}}\n"
-    "  path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,segment_length} | file},\n"
-    "    arc_chords, machine{kinematics,tcp_on,tcp_off,...} (5-axis G-code)\n"
-    "  design{stl, gouge_tolerance (mm, default 0.001), normal_deviation, gouge_depth}:\n"
-    "    machined - design statistics, the gouging moves (file lines), DIR/deviation.png,\n"
-    "    and with normal_deviation DIR/deviation.ply (signed distance along the normal).\n"
-    "Path files by extension: .cl .apt .cls (APT CL data: GOTO, CUTTER, RAPID, ...),\n"
-    ".nc .ngc .gcode .tap (G-code G0-G3, G17-G21, G90/G91), .txt (x y z [i j k] lines).\n"
-    "Without \"tool\", an APT CUTTER/ statement defines the cutter.";
+// The cutter types come from the shape table (tools/io/job_cutter_shapes.h).
+std::string simulateHelp() {
+  return std::string(
+             "Simulate a job (JSON): its exact height map, preview and report.\n"
+             "Writes DIR/heights.exr (float32 channel Z, mm), DIR/heights.gsf\n"
+             "(Gwyddion, metres), DIR/preview.png (shaded colour map with scale) and\n"
+             "DIR/report.json (inputs, grid, timings, measurements).\n"
+             "Without JOB, runs the built-in default job (see --print-default-job):\n"
+             "a bull cutter R=3 r=1 raster over 20x20 mm, lead 5 deg, step-over 2.884 mm.\n"
+             "Job file keys (docs/CONVENTIONS.md has each one, with units and ranges):\n"
+             "  tool{type, ...} or tools{\"N\": {...}} (G-code T words); type is one of\n"
+             "    ") +
+         cutterTypeList() + "\n" +
+         "    (each type's keys: `scallop cutter --list`); teeth: flutes, helix_deg,\n"
+         "    runout_mm, runout_phase_deg, tooth_offsets, tooth_angles_deg, edge_span,\n"
+         "    tooth_edge_spans, rake_deg, tooth_rakes_deg (docs/teeth.md)\n"
+         "  cutting{model (envelope|teeth), feed_per_tooth (mm), phase_deg}, spindle (cw|ccw)\n"
+         "  stock{min,max} | stock{stl} | stock{gsf}    grid{spacing, "
+         "frame{origin,u,normal,size}}\n"
+         "  path{raster{direction,step_over,depth,lead_deg,tilt_deg,zigzag,segment_length} | "
+         "file},\n"
+         "    arc_chords, machine{kinematics,tcp_on,tcp_off,...} (5-axis G-code)\n"
+         "  design{stl, gouge_tolerance (mm, default 0.001), normal_deviation, gouge_depth}:\n"
+         "    machined - design statistics, the gouging moves (file lines), DIR/deviation.png,\n"
+         "    and with normal_deviation DIR/deviation.ply (signed distance along the normal).\n"
+         "Path files by extension: .cl .apt .cls (APT CL data: GOTO, CUTTER, RAPID, ...),\n"
+         ".nc .ngc .gcode .tap (G-code G0-G3, G17-G21, G90/G91), .txt (x y z [i j k] lines).\n"
+         "Without \"tool\", an APT CUTTER/ statement defines the cutter.";
+}
 
 }  // namespace
 
@@ -164,7 +172,7 @@ Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
   auto args = std::make_shared<SimulateArgs>();
   auto printDefault = std::make_shared<bool>(false);
   auto printBandLayout = std::make_shared<bool>(false);
-  CLI::App* app = parent.add_subcommand("simulate", kSimulateHelp);
+  CLI::App* app = parent.add_subcommand("simulate", simulateHelp());
   app->add_option("JOB", args->jobFile, "Job file (JSON); omit for the built-in default job");
   app->add_option("-o,--output", args->run.outDir,
                   "Output folder, created if missing; other files in it are left alone")

@@ -86,17 +86,18 @@ Command addStatsCommand(CLI::App& parent, CommonOptions& common) {
   auto args = std::make_shared<StatsArgs>();
   CLI::App* app = parent.add_subcommand(
       "stats",
-      "ISO 25178-2 height parameters Sa, Sq, Ssk, Sku, Sp, Sv, Sz of a height map written by\n"
-      "scallop (FILE.gsf or FILE.exr), over the whole map or a --region, after least-squares\n"
-      "plane levelling (default) or none (heights from the mean). Sku is the plain kurtosis\n"
-      "(3 for a Gaussian surface; Gwyddion shows the excess, Sku - 3). With --profile, also\n"
+      "ISO 25178-2 height parameters (Sa, Sq, ...) of a height map.\n"
+      "Sa, Sq, Ssk, Sku, Sp, Sv, Sz of a height map (FILE.gsf, FILE.exr or FILE.x3p), over\n"
+      "the whole map or a --region, after least-squares plane levelling (default) or none\n"
+      "(heights from the mean). Sku is the plain kurtosis (3 for a Gaussian surface;\n"
+      "Gwyddion shows the excess, Sku - 3). With --profile, also\n"
       "Ra, Rq, Rz, Rt, Rsm (ISO 4287 / 21920-2) of the line's roughness profile: ISO 16610-21\n"
       "Gaussian filter of cutoff --cutoff (lc), optionally --lambda-s (ls), up to 5 sampling\n"
       "lengths (ISO 4288), run-in/out of one cutoff each; or --unfiltered: the profile less\n"
       "its least-squares line, one sampling length (feed marks as a ruler measures them).\n"
       "The output names the filter, the evaluation length and the sampling lengths.\n"
       "Cell (i, j) is one sample at its centre. Lengths in mm.");
-  app->add_option("FILE", args->file, "Height map: .gsf (Gwyddion Simple Field) or .exr")
+  app->add_option("FILE", args->file, "Height map: .gsf (Gwyddion Simple Field), .exr or .x3p")
       ->required();
   app->add_option("--region", args->region,
                   "x0 y0 x1 y1: only the cells whose centres lie in this rectangle, mm")

@@ -30,6 +30,7 @@ int runSurface(SurfaceArgs args) {
 namespace {
 
 constexpr const char* kSurfaceHelp =
+    "Write a faceted analytic test surface as STL.\n"
     "Write a faceted test surface as STL: analytic height fields over [0, X] x [0, Y] mm,\n"
     "sampled on a regular grid (two triangles per cell, normals up), standing in for the\n"
     "convex, concave, saddle and mixed test models of seed 004 (u = 2x/X - 1, v = 2y/Y - 1):\n"

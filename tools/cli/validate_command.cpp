@@ -52,6 +52,7 @@ int runValidateCommand(const ValidationSettings& settings, bool json) {
 }
 
 constexpr const char* kValidateHelp =
+    "Reproduce the seeds' tables beside the simulated truth.\n"
     "The validation run: reproduces seed 000 Tables 2-5 and seed 001 Tables 1-4 with the\n"
     "simulated truth beside the printed values (the scallop each printed L/2 really\n"
     "leaves, um error against h; the exact L/2 for each h, mm). Writes DIR/seed000_table2.csv\n"

@@ -229,14 +229,14 @@ GcodeInterpreter::State GcodeInterpreter::target(const GcodeBlock& b, bool machi
     if (letter != 'C' && letter != tiltLetter)
       throw InputError(where_, fmt::format("rotary word {}: the machine ({}) has axes {} and C",
                                            letter, bc ? "xyzbc-trt" : "xyzac-trt", tiltLetter));
-    const double radians = b.at(letter) * kPi / 180;
+    const double radians = degToRad(b.at(letter));
     double& angle = letter == 'C' ? t.spin : t.tilt;
     angle = absolute_ || machineFrame ? radians : angle + radians;
   }
   if (options_.machine && machineAxis(options_.machine->geometry.kinematics, t.tilt, t.spin).z < 0)
     throw InputError(where_, fmt::format("the tilt {:g} deg points the tool below the horizontal: "
                                          "a height map seen from above cannot show what it cuts",
-                                         t.tilt * 180 / kPi));
+                                         radToDeg(t.tilt)));
   return t;
 }
 

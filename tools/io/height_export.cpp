@@ -15,18 +15,14 @@
 #include "base/version.h"
 #include "tools/io/atomic_file.h"
 #include "tools/io/file_names.h"
+#include "tools/io/height_formats.h"
 #include "tools/io/height_images.h"
 
 namespace scallop {
 
 ZMap readHeightFile(const std::string& path, std::string* frame) {
-  const std::string ext = lowerExtension(path);
   if (!std::filesystem::exists(path)) throw InputError(path, "no such file");
-  if (ext == ".gsf") return readHeightsGsf(path, frame);
-  if (ext == ".exr") return readHeightsExr(path, frame);
-  throw InputError(path,
-                   "expected a height map written by scallop: a Gwyddion Simple Field "
-                   "(.gsf) or an OpenEXR (.exr) file");
+  return heightFormatOf(path, true).read(path, frame);
 }
 
 void writeHeights16(const ZMap& map, const std::string& path, const std::string& frame) {

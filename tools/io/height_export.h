@@ -1,6 +1,7 @@
 // Height-map file exchange beyond simulate's own outputs (height_images.h):
-//  - readHeightFile: reads a .gsf or .exr height map by its extension (anything else
-//    is refused with exit 1, naming the expected formats);
+//  - readHeightFile: reads a height map by its extension through the table of
+//    height_formats.h (.gsf, .exr, .x3p; anything else is refused with exit 1, naming
+//    the expected formats);
 //  - 16-bit PNG and TIFF: grey levels v = 0..65535 with z_mm = offset + scale * v,
 //    offset = the map's minimum and scale = range / 65535 (a quantisation of at most
 //    scale / 2). Both are spelled out in ImageDescription (a PNG tEXt chunk, the TIFF

@@ -1,3 +1,4 @@
+// The cutter-shape table (job_cutter_shapes.h).
 #include "tools/io/job_cutter_shapes.h"
 
 #include <nlohmann/json.hpp>
@@ -16,23 +17,6 @@ using namespace jobfield;
 namespace {
 
 const double kZero = 0;
-
-// The keys of one shape: its own and the teeth keys, "type" always.
-void rejectOtherKeys(const json& tool, std::set<std::string> keys,
-                     const std::set<std::string>& teethKeys, const std::string& f) {
-  keys.insert("type");
-  keys.insert(teethKeys.begin(), teethKeys.end());
-  rejectUnknownKeys(tool, keys, f);
-}
-
-// A length that may be left out (0 then: the builder's default or "not given").
-double optionalLength(const json& tool, const char* key, const std::string& f) {
-  return number(tool, key, f + "." + key, &kZero);
-}
-
-double required(const json& tool, const char* key, const std::string& f) {
-  return number(tool, key, f + "." + key);
-}
 
 // "segments": [{"to": [rho, s]}, {"to": [rho, s], "arc_radius": R}, ...] from (0, 0).
 std::vector<ProfileSegment> parseSegments(const json& tool, const std::string& f) {
@@ -66,109 +50,231 @@ std::vector<ProfileSegment> parseSegments(const json& tool, const std::string& f
   return chain;
 }
 
-}  // namespace
-
-const std::set<std::string>& shapedCutterTypeNames() {
-  static const std::set<std::string> names = {"taper_ball", "taper_bull",   "cone",
-                                              "barrel",     "taper_barrel", "oval",
-                                              "lens",       "profile",      "apt"};
-  return names;
+// Ball, flat and bull: a radius (and a bull's corner radius), L defaulting to 4 R.
+Cutter revolved(CutterType type, const CutterKeyValues& k, const std::string& f) {
+  if (k.given("flute_length") && !(k["flute_length"] > 0))
+    throw InputError(f + ".flute_length", "must be > 0 mm");
+  return Cutter::make(type, k["radius"], k["corner_radius"], k["flute_length"], f);
 }
 
-Cutter parseShapedCutter(const json& tool, const std::string& type,
-                         const std::set<std::string>& teethKeys, const std::string& f) {
-  if (type == "taper_ball") {
-    rejectOtherKeys(tool, {"tip_radius", "taper_deg", "flute_length", "flute_diameter"}, teethKeys,
-                    f);
-    TaperBallShape shape;
-    shape.tipRadius = required(tool, "tip_radius", f);
-    shape.taperDeg = required(tool, "taper_deg", f);
-    shape.fluteLength = optionalLength(tool, "flute_length", f);
-    shape.fluteDiameter = optionalLength(tool, "flute_diameter", f);
-    return cutterOfChain(CutterType::TaperBall, taperBallChain(shape, f), f);
+// Keys several shapes share, worded once.
+const CutterKey kFluteLength{"flute_length", "L: the flutes' height above the tip, mm", true};
+const CutterKey kFluteLengthOr{
+    "flute_length", "L, mm; or flute_diameter: where the flank reaches that diameter, mm", false};
+const CutterKey kFluteDiameter{"flute_diameter", "the flank's diameter at its top, mm", false};
+const CutterKey kTaper{"taper_deg", "the flank's angle to the axis, per side, degrees (0, 45]",
+                       true};
+
+}  // namespace
+
+double CutterKeyValues::operator[](const std::string& key) const {
+  const auto it = values_.find(key);
+  return it == values_.end() ? 0.0 : it->second;
+}
+
+const std::vector<CutterShape>& cutterShapes() {
+  static const std::vector<CutterShape> table = {
+      {"ball",
+       "ball end mill: a hemisphere of radius R on a cylinder",
+       {{"radius", "R, mm (> 0)", true}, {"flute_length", "L, mm (default 4 R)", false}},
+       {{"ball", "ball R3", R"({"type": "ball", "radius": 3, "flute_length": 12})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         return revolved(CutterType::Ball, k, f);
+       }},
+      {"flat",
+       "flat end mill: a cylinder of radius R",
+       {{"radius", "R, mm (> 0)", true}, {"flute_length", "L, mm (default 4 R)", false}},
+       {{"flat", "flat R3", R"({"type": "flat", "radius": 3, "flute_length": 12})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         return revolved(CutterType::Flat, k, f);
+       }},
+      {"bull",
+       "bull-nose (torus, filleted) end mill: radius R, corner radius r",
+       {{"radius", "R, mm (> 0)", true},
+        {"corner_radius", "r: the torus's tube radius, mm (0 < r < R)", true},
+        {"flute_length", "L, mm (default 4 R)", false}},
+       {{"bull", "bull R3 r1",
+         R"({"type": "bull", "radius": 3, "corner_radius": 1, "flute_length": 12})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         return revolved(CutterType::Bull, k, f);
+       }},
+      {"taper_ball",
+       "tapered ball mill: a ball tip on a cone (rib and blade finishing)",
+       {{"tip_radius", "the ball tip's radius, mm (> 0)", true},
+        kTaper,
+        kFluteLengthOr,
+        kFluteDiameter},
+       {{"taper_ball", "taper_ball r1 5°",
+         R"({"type": "taper_ball", "tip_radius": 1, "taper_deg": 5, "flute_length": 12})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         TaperBallShape s;
+         s.tipRadius = k["tip_radius"], s.taperDeg = k["taper_deg"];
+         s.fluteLength = k["flute_length"], s.fluteDiameter = k["flute_diameter"];
+         return cutterOfChain(CutterType::TaperBall, taperBallChain(s, f), f);
+       }},
+      {"taper_bull",
+       "tapered corner-radius mill: a flat bottom, a corner arc and a cone",
+       {{"tip_diameter", "where the bottom and the flank, extended, meet, mm (> 0)", true},
+        {"corner_radius", "the arc tangent to bottom and flank, mm (>= 0, below the tip's)", true},
+        kTaper,
+        kFluteLengthOr,
+        kFluteDiameter},
+       {{"taper_bull", "taper_bull d4 r1 8°",
+         R"({"type": "taper_bull", "tip_diameter": 4, "corner_radius": 1, "taper_deg": 8, )"
+         R"("flute_length": 12})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         TaperBullShape s;
+         s.tipDiameter = k["tip_diameter"], s.cornerRadius = k["corner_radius"];
+         s.taperDeg = k["taper_deg"];
+         s.fluteLength = k["flute_length"], s.fluteDiameter = k["flute_diameter"];
+         return cutterOfChain(CutterType::TaperBull, taperBullChain(s, f), f);
+       }},
+      {"cone",
+       "V-bit, chamfer mill, drill point: a cone from a point or a flat tip",
+       {{"angle_deg", "the included angle, degrees (0, 180)", true},
+        {"tip_diameter", "the flat tip's diameter, mm (0: a point; below diameter)", false},
+        {"diameter", "the cylinder's diameter above the cone, mm (> 0)", true},
+        {"flute_length", "L, mm (at least the cone's height)", true}},
+       {{"cone_vbit", "cone 60° V-bit",
+         R"({"type": "cone", "angle_deg": 60, "diameter": 6, "flute_length": 12})"},
+        {"cone_chamfer", "cone 90° d1 chamfer",
+         R"({"type": "cone", "angle_deg": 90, "tip_diameter": 1, "diameter": 6, )"
+         R"("flute_length": 8})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         ConeShape s;
+         s.angleDeg = k["angle_deg"], s.tipDiameter = k["tip_diameter"];
+         s.diameter = k["diameter"], s.fluteLength = k["flute_length"];
+         return cutterOfChain(CutterType::Cone, coneChain(s, f), f);
+       }},
+      {"barrel",
+       "barrel: a side arc of large radius, widest at its equator",
+       {{"diameter", "the widest diameter, mm (> 0)", true},
+        {"form_radius", "the side arc's radius, mm (> diameter / 2)", true},
+        {"tip_radius", "the corner arc to the flat bottom, mm (0: a sharp edge)", false},
+        {"equator_height", "the widest point above the tip, mm (default L / 2)", false},
+        kFluteLength},
+       {{"barrel", "barrel d12 R40 r1",
+         R"({"type": "barrel", "diameter": 12, "form_radius": 40, "tip_radius": 1, )"
+         R"("flute_length": 12})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         BarrelShape s;
+         s.diameter = k["diameter"], s.formRadius = k["form_radius"];
+         s.tipRadius = k["tip_radius"], s.fluteLength = k["flute_length"];
+         s.equatorHeight = k.given("equator_height") ? k["equator_height"] : s.fluteLength / 2;
+         return cutterOfChain(CutterType::Barrel, barrelChain(s, f), f);
+       }},
+      {"taper_barrel",
+       "taper barrel (conical barrel): a ball tip and a side arc of large radius",
+       {{"tip_radius", "the ball tip's radius, mm (> 0)", true},
+        {"form_radius", "the side arc's radius, mm (> tip_radius)", true},
+        {"taper_deg", "the side arc's angle to the axis at the reference, degrees [0, 45]", true},
+        {"reference_diameter", "where the side arc makes taper_deg, mm (> 0)", true},
+        kFluteLength},
+       {{"taper_barrel", "taper_barrel r2 R250 10°",
+         R"({"type": "taper_barrel", "tip_radius": 2, "form_radius": 250, "taper_deg": 10, )"
+         R"("reference_diameter": 8, "flute_length": 20})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         TaperBarrelShape s;
+         s.tipRadius = k["tip_radius"], s.formRadius = k["form_radius"];
+         s.taperDeg = k["taper_deg"], s.referenceDiameter = k["reference_diameter"];
+         s.fluteLength = k["flute_length"];
+         return cutterOfChain(CutterType::TaperBarrel, taperBarrelChain(s, f), f);
+       }},
+      {"oval",
+       "oval: a ball tip and a side arc widest at its diameter",
+       {{"diameter", "the widest diameter, mm (> 0)", true},
+        {"form_radius", "the side arc's radius, mm (> diameter / 2)", true},
+        {"tip_radius", "the ball tip's radius, mm (0 < r < diameter / 2)", true},
+        kFluteLength},
+       {{"oval", "oval d8 R12 r1.5",
+         R"({"type": "oval", "diameter": 8, "form_radius": 12, "tip_radius": 1.5, )"
+         R"("flute_length": 10})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         OvalShape s;
+         s.diameter = k["diameter"], s.formRadius = k["form_radius"];
+         s.tipRadius = k["tip_radius"], s.fluteLength = k["flute_length"];
+         return cutterOfChain(CutterType::Oval, ovalChain(s, f), f);
+       }},
+      {"lens",
+       "lens: a tip arc centred on the axis, a corner arc and a cylinder",
+       {{"diameter", "the cylinder's diameter, mm (> 0)", true},
+        {"form_radius", "the tip arc's radius, mm (> diameter / 2)", true},
+        {"corner_radius", "the arc from the tip arc to the cylinder, mm (0: a sharp edge)", false},
+        kFluteLength},
+       {{"lens", "lens d10 R12 r1",
+         R"({"type": "lens", "diameter": 10, "form_radius": 12, "corner_radius": 1, )"
+         R"("flute_length": 8})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         LensShape s;
+         s.diameter = k["diameter"], s.formRadius = k["form_radius"];
+         s.cornerRadius = k["corner_radius"], s.fluteLength = k["flute_length"];
+         return cutterOfChain(CutterType::Lens, lensChain(s, f), f);
+       }},
+      {"profile",
+       "any convex profile: segments (lines and arcs) from the tip up",
+       {{"segments",
+         "[{\"to\": [rho, s]}, {\"to\": [rho, s], \"arc_radius\": R}, ...] from [0, 0], mm", true}},
+       {{"profile", "profile",
+         R"({"type": "profile", "segments": [{"to": [1, 0]}, )"
+         R"({"to": [1.7071067811865475, 0.2928932188134524], "arc_radius": 1}, )"
+         R"({"to": [2.5, 1.2]}, {"to": [3, 10]}]})"}},
+       [](const CutterKeyValues&, const json& tool, const std::string& f) {
+         return cutterOfChain(CutterType::Profile, parseSegments(tool, f), f);
+       }},
+      {"apt",
+       "APT's 7-value CUTTER/d, r, e, f, a, b, h",
+       {{"d", "diameter, mm (> 0)", true},
+        {"r", "corner radius, mm (>= 0)", true},
+        {"e", "the corner centre's radius, mm", true},
+        {"f", "the corner centre's height, mm", true},
+        {"a", "the bottom line's angle, degrees [0, 90)", true},
+        {"b", "the side line's angle to the axis, degrees (-90, 90), a + b < 90", true},
+        {"h", "the height, mm (> 0)", true}},
+       {{"apt", "APT CUTTER/6,1,2,2.309,30,0,10",
+         R"({"type": "apt", "d": 6, "r": 1, "e": 2, "f": 2.3094010767585, "a": 30, "b": 0, )"
+         R"("h": 10})"}},
+       [](const CutterKeyValues& k, const json&, const std::string& f) {
+         AptCutterValues v;
+         v.d = k["d"], v.r = k["r"], v.e = k["e"], v.f = k["f"];
+         v.a = k["a"], v.b = k["b"], v.h = k["h"];
+         return aptCutter(v, f);
+       }},
+  };
+  return table;
+}
+
+const CutterShape* findCutterShape(const std::string& type) {
+  for (const CutterShape& shape : cutterShapes())
+    if (type == shape.type) return &shape;
+  return nullptr;
+}
+
+std::string cutterTypeList() {
+  const std::vector<CutterShape>& table = cutterShapes();
+  std::string text;
+  for (size_t k = 0; k < table.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == table.size() ? " or " : ", ") + std::string(table[k].type);
+  return text;
+}
+
+Cutter parseCutterShape(const json& tool, const std::set<std::string>& teethKeys,
+                        const std::string& f) {
+  const std::string type = text(tool, "type", f + ".type");
+  const CutterShape* shape = findCutterShape(type);
+  if (!shape)
+    throw InputError(f + ".type",
+                     "unknown cutter type \"" + type + "\", expected " + cutterTypeList());
+  std::set<std::string> known = teethKeys;
+  known.insert("type");
+  for (const CutterKey& key : shape->keys) known.insert(key.name);
+  rejectUnknownKeys(tool, known, f);
+  CutterKeyValues values;
+  for (const CutterKey& key : shape->keys) {
+    if (std::string(key.name) == "segments") continue;  // not a number: the builder's
+    if (key.required || tool.contains(key.name))
+      values.set(key.name, number(tool, key.name, f + "." + key.name));
   }
-  if (type == "taper_bull") {
-    rejectOtherKeys(
-        tool, {"tip_diameter", "corner_radius", "taper_deg", "flute_length", "flute_diameter"},
-        teethKeys, f);
-    TaperBullShape shape;
-    shape.tipDiameter = required(tool, "tip_diameter", f);
-    shape.cornerRadius = required(tool, "corner_radius", f);
-    shape.taperDeg = required(tool, "taper_deg", f);
-    shape.fluteLength = optionalLength(tool, "flute_length", f);
-    shape.fluteDiameter = optionalLength(tool, "flute_diameter", f);
-    return cutterOfChain(CutterType::TaperBull, taperBullChain(shape, f), f);
-  }
-  if (type == "cone") {
-    rejectOtherKeys(tool, {"angle_deg", "tip_diameter", "diameter", "flute_length"}, teethKeys, f);
-    ConeShape shape;
-    shape.angleDeg = required(tool, "angle_deg", f);
-    shape.tipDiameter = optionalLength(tool, "tip_diameter", f);
-    shape.diameter = required(tool, "diameter", f);
-    shape.fluteLength = required(tool, "flute_length", f);
-    return cutterOfChain(CutterType::Cone, coneChain(shape, f), f);
-  }
-  if (type == "barrel") {
-    rejectOtherKeys(tool,
-                    {"diameter", "form_radius", "tip_radius", "equator_height", "flute_length"},
-                    teethKeys, f);
-    BarrelShape shape;
-    shape.diameter = required(tool, "diameter", f);
-    shape.formRadius = required(tool, "form_radius", f);
-    shape.tipRadius = optionalLength(tool, "tip_radius", f);
-    shape.fluteLength = required(tool, "flute_length", f);
-    shape.equatorHeight = tool.contains("equator_height") ? required(tool, "equator_height", f)
-                                                          : shape.fluteLength / 2;
-    return cutterOfChain(CutterType::Barrel, barrelChain(shape, f), f);
-  }
-  if (type == "taper_barrel") {
-    rejectOtherKeys(
-        tool, {"tip_radius", "form_radius", "taper_deg", "reference_diameter", "flute_length"},
-        teethKeys, f);
-    TaperBarrelShape shape;
-    shape.tipRadius = required(tool, "tip_radius", f);
-    shape.formRadius = required(tool, "form_radius", f);
-    shape.taperDeg = required(tool, "taper_deg", f);
-    shape.referenceDiameter = required(tool, "reference_diameter", f);
-    shape.fluteLength = required(tool, "flute_length", f);
-    return cutterOfChain(CutterType::TaperBarrel, taperBarrelChain(shape, f), f);
-  }
-  if (type == "oval") {
-    rejectOtherKeys(tool, {"diameter", "form_radius", "tip_radius", "flute_length"}, teethKeys, f);
-    OvalShape shape;
-    shape.diameter = required(tool, "diameter", f);
-    shape.formRadius = required(tool, "form_radius", f);
-    shape.tipRadius = required(tool, "tip_radius", f);
-    shape.fluteLength = required(tool, "flute_length", f);
-    return cutterOfChain(CutterType::Oval, ovalChain(shape, f), f);
-  }
-  if (type == "lens") {
-    rejectOtherKeys(tool, {"diameter", "form_radius", "corner_radius", "flute_length"}, teethKeys,
-                    f);
-    LensShape shape;
-    shape.diameter = required(tool, "diameter", f);
-    shape.formRadius = required(tool, "form_radius", f);
-    shape.cornerRadius = optionalLength(tool, "corner_radius", f);
-    shape.fluteLength = required(tool, "flute_length", f);
-    return cutterOfChain(CutterType::Lens, lensChain(shape, f), f);
-  }
-  if (type == "profile") {
-    rejectOtherKeys(tool, {"segments"}, teethKeys, f);
-    return cutterOfChain(CutterType::Profile, parseSegments(tool, f), f);
-  }
-  if (type == "apt") {
-    rejectOtherKeys(tool, {"d", "r", "e", "f", "a", "b", "h"}, teethKeys, f);
-    AptCutterValues v;
-    v.d = required(tool, "d", f);
-    v.r = required(tool, "r", f);
-    v.e = required(tool, "e", f);
-    v.f = required(tool, "f", f);
-    v.a = required(tool, "a", f);
-    v.b = required(tool, "b", f);
-    v.h = required(tool, "h", f);
-    return aptCutter(v, f);
-  }
-  throw InputError(f + ".type", "unknown cutter type \"" + type + "\"");
+  return shape->build(values, tool, f);
 }
 
 json profileSegmentsToJson(const CutterProfile& profile) {

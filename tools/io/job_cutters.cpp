@@ -134,34 +134,7 @@ Cutter parseCutter(const json& tool, const std::string& f) {
   static const std::set<std::string> teethKeys = {
       "flutes",        "helix_deg", "runout_mm",        "runout_phase_deg", "tooth_angles_deg",
       "tooth_offsets", "edge_span", "tooth_edge_spans", "rake_deg",         "tooth_rakes_deg"};
-  const std::string typeName = text(tool, "type", f + ".type");
-  Cutter cutter;
-  if (shapedCutterTypeNames().count(typeName)) {
-    cutter = parseShapedCutter(tool, typeName, teethKeys, f);
-  } else {
-    if (typeName != "ball" && typeName != "flat" && typeName != "bull")
-      throw InputError(f + ".type", "unknown cutter type \"" + typeName +
-                                        "\", expected ball, flat, bull, taper_ball, taper_bull, "
-                                        "cone, barrel, taper_barrel, oval, lens, profile or apt");
-    std::set<std::string> keys = {"type", "radius", "corner_radius", "flute_length"};
-    keys.insert(teethKeys.begin(), teethKeys.end());
-    rejectUnknownKeys(tool, keys, f);
-    const CutterType type = parseCutterType(typeName, f + ".type");
-    const double zero = 0;
-    const double radius = number(tool, "radius", f + ".radius");
-    double corner = 0;
-    if (type == CutterType::Bull) {
-      corner = number(tool, "corner_radius", f + ".corner_radius");
-    } else if (tool.contains("corner_radius")) {
-      throw InputError(f + ".corner_radius",
-                       std::string("only a bull cutter takes a corner radius (a ") +
-                           toString(type) + " cutter's is fixed)");
-    }
-    const double flute = number(tool, "flute_length", f + ".flute_length", &zero);
-    if (tool.contains("flute_length") && flute <= 0)
-      throw InputError(f + ".flute_length", "must be > 0 mm");
-    cutter = Cutter::make(type, radius, corner, flute, f);
-  }
+  Cutter cutter = parseCutterShape(tool, teethKeys, f);
   // The teeth: the types checked here, the ranges in CutterTeeth::make (one place).
   const CutterTeeth defaults;
   const int64_t flutes = wholeNumber(tool, "flutes", f + ".flutes", defaults.flutes, "teeth");

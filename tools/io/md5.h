@@ -1,9 +1,11 @@
 // MD5 message digest (RFC 1321), for the checksums an ISO 5436-2 X3P file carries
-// (bindata/data.bin and main.xml). Not for security: X3P simply specifies MD5.
+// (bindata/data.bin and main.xml) and the band files' checks. Not for security: X3P
+// simply specifies MD5. Computed by Nettle (Debian's nettle-dev).
 #pragma once
 
+#include <nettle/md5.h>
+
 #include <cstddef>
-#include <cstdint>
 #include <string>
 
 namespace scallop {
@@ -16,10 +18,7 @@ class Md5 {
   std::string hexDigest();
 
  private:
-  void block(const unsigned char* p);
-  uint32_t state_[4];
-  uint64_t length_ = 0;  // bytes seen
-  unsigned char buffer_[64];
+  md5_ctx context_;
 };
 
 std::string md5Hex(const std::string& bytes);

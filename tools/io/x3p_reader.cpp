@@ -1,4 +1,4 @@
-// X3P reader (x3p_reader.h), with libzip.
+// X3P reader (x3p_reader.h): the archive with libzip, main.xml with pugixml.
 #include "tools/io/x3p_reader.h"
 
 #include <fmt/format.h>
@@ -7,10 +7,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <memory>
+#include <pugixml.hpp>
+#include <string_view>
 
 #include "base/input_error.h"
 #include "tools/io/md5.h"
+#include "tools/io/zip_error.h"
 
 namespace scallop {
 
@@ -39,51 +43,84 @@ std::string member(zip_t* zip, const char* name, const std::string& path) {
   return bytes;
 }
 
-// The text of the first <tag>...</tag> in `xml` (a namespace prefix on the tag is
-// allowed), or throws naming it.
-std::string element(const std::string& xml, const std::string& tag, const std::string& path) {
-  for (size_t at = xml.find(tag); at != std::string::npos; at = xml.find(tag, at + 1)) {
-    const size_t open = xml.rfind('<', at);
-    const size_t close = at + tag.size();
-    if (open == std::string::npos || close >= xml.size() || xml[close] != '>') continue;
-    const std::string prefix = xml.substr(open + 1, at - open - 1);
-    if (prefix.find_first_of("</> \t\n") != std::string::npos) continue;  // another tag
-    const size_t stop = xml.find("</" + prefix + tag + ">", close);
-    if (stop == std::string::npos) break;
-    const std::string text = xml.substr(close + 1, stop - close - 1);
+// main.xml parsed by pugixml. ISO 5436-2 puts the namespace prefix on the root
+// (p:ISO5436_2) and writers differ on the rest, so elements are found by their local
+// name, along their path from the root.
+class MainXml {
+ public:
+  MainXml(const std::string& text, const std::string& path) : path_(path) {
+    const pugi::xml_parse_result parsed = document_.load_buffer(text.data(), text.size());
+    if (!parsed)
+      throw InputError(path, fmt::format("main.xml is not well-formed XML: {} at byte {}",
+                                         parsed.description(), parsed.offset));
+    root_ = document_.document_element();
+  }
+
+  // The element at `names` below the root, or a null node.
+  pugi::xml_node find(std::initializer_list<const char*> names) const {
+    pugi::xml_node node = root_;
+    for (const char* name : names) node = child(node, name);
+    return node;
+  }
+  // Its text, white space trimmed; throws naming the element when it is missing.
+  std::string text(std::initializer_list<const char*> names) const {
+    const pugi::xml_node node = find(names);
+    if (!node)
+      throw InputError(path_, std::string("main.xml has no ") + *(names.end() - 1) + " element");
+    return trimmed(node.text().get());
+  }
+  // The same, as a number.
+  double number(std::initializer_list<const char*> names, const std::string& what) const {
+    const std::string t = text(names);
+    size_t used = 0;
+    double v = NAN;
+    try {
+      v = std::stod(t, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != t.size() || !std::isfinite(v))
+      throw InputError(path_, "main.xml: " + what + " is \"" + t + "\", expected a number");
+    return v;
+  }
+
+ private:
+  static std::string_view localName(const pugi::xml_node& node) {
+    const std::string_view name = node.name();
+    const size_t colon = name.find(':');
+    return colon == std::string_view::npos ? name : name.substr(colon + 1);
+  }
+  static pugi::xml_node child(const pugi::xml_node& parent, const char* name) {
+    for (const pugi::xml_node& c : parent.children())
+      if (c.type() == pugi::node_element && localName(c) == name) return c;
+    return {};
+  }
+  static std::string trimmed(const std::string& text) {
     const size_t a = text.find_first_not_of(" \t\r\n"), b = text.find_last_not_of(" \t\r\n");
     return a == std::string::npos ? std::string() : text.substr(a, b - a + 1);
   }
-  throw InputError(path, "main.xml has no " + tag + " element");
-}
 
-double number(const std::string& text, const std::string& what, const std::string& path) {
-  size_t used = 0;
-  double v = NAN;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v))
-    throw InputError(path, "main.xml: " + what + " is \"" + text + "\", expected a number");
-  return v;
-}
+  std::string path_;
+  pugi::xml_document document_;
+  pugi::xml_node root_;
+};
 
 struct Axis {
   std::string type, dataType;
   double increment = 1, offset = 0;
 };
 
-Axis axis(const std::string& xml, const std::string& name, const std::string& path) {
-  const std::string block = element(xml, name, path);
+// Axis `name` (CX, CY, CZ) of Record1/Axes; DataType, Increment and Offset are optional.
+Axis axis(const MainXml& xml, const char* name) {
   Axis a;
-  a.type = element(block, "AxisType", path);
-  if (block.find("DataType>") != std::string::npos) a.dataType = element(block, "DataType", path);
-  if (block.find("Increment>") != std::string::npos)
-    a.increment = number(element(block, "Increment", path), name + " Increment", path);
-  if (block.find("Offset>") != std::string::npos)
-    a.offset = number(element(block, "Offset", path), name + " Offset", path);
+  a.type = xml.text({"Record1", "Axes", name, "AxisType"});
+  if (xml.find({"Record1", "Axes", name, "DataType"}))
+    a.dataType = xml.text({"Record1", "Axes", name, "DataType"});
+  if (xml.find({"Record1", "Axes", name, "Increment"}))
+    a.increment =
+        xml.number({"Record1", "Axes", name, "Increment"}, std::string(name) + " Increment");
+  if (xml.find({"Record1", "Axes", name, "Offset"}))
+    a.offset = xml.number({"Record1", "Axes", name, "Offset"}, std::string(name) + " Offset");
   return a;
 }
 
@@ -92,17 +129,11 @@ Axis axis(const std::string& xml, const std::string& name, const std::string& pa
 ZMap readHeightsX3p(const std::string& path) {
   int error = 0;
   std::unique_ptr<zip_t, ZipCloser> zip(zip_open(path.c_str(), ZIP_RDONLY, &error));
-  if (!zip) {
-    zip_error_t e;
-    zip_error_init_with_code(&e, error);
-    const std::string why = zip_error_strerror(&e);
-    zip_error_fini(&e);
-    throw InputError(path, "cannot open the X3P (zip) archive: " + why);
-  }
-  const std::string xml = member(zip.get(), "main.xml", path);
-  if (element(xml, "FeatureType", path) != "SUR")
+  if (!zip) throw InputError(path, "cannot open the X3P (zip) archive: " + zipErrorText(error));
+  const MainXml xml(member(zip.get(), "main.xml", path), path);
+  if (xml.text({"Record1", "FeatureType"}) != "SUR")
     throw InputError(path, "main.xml: FeatureType is not SUR; expected a surface (height map)");
-  const Axis cx = axis(xml, "CX", path), cy = axis(xml, "CY", path), cz = axis(xml, "CZ", path);
+  const Axis cx = axis(xml, "CX"), cy = axis(xml, "CY"), cz = axis(xml, "CZ");
   if (cx.type != "I" || cy.type != "I")
     throw InputError(path, "main.xml: CX and CY must be incremental axes (AxisType I)");
   if (!(cx.increment > 0) || std::fabs(cx.increment - cy.increment) > 1e-9 * cx.increment)
@@ -114,18 +145,18 @@ ZMap readHeightsX3p(const std::string& path) {
   if (!bytesPerValue)
     throw InputError(path, "main.xml: CZ DataType is \"" + cz.dataType +
                                "\"; expected D (float64) or F (float32)");
-  const double sx = number(element(xml, "SizeX", path), "SizeX", path);
-  const double sy = number(element(xml, "SizeY", path), "SizeY", path);
+  const double sx = xml.number({"Record3", "MatrixDimension", "SizeX"}, "SizeX");
+  const double sy = xml.number({"Record3", "MatrixDimension", "SizeY"}, "SizeY");
   if (!(sx >= 1 && sy >= 1 && sx == std::floor(sx) && sy == std::floor(sy) && sx * sy <= 1e12))
     throw InputError(path, "main.xml: SizeX and SizeY must be whole numbers >= 1");
-  const std::string link = element(xml, "PointDataLink", path);
+  const std::string link = xml.text({"Record3", "DataLink", "PointDataLink"});
   const std::string data = member(zip.get(), link.c_str(), path);
   const uint64_t cells = uint64_t(sx) * uint64_t(sy);
   if (data.size() != cells * uint64_t(bytesPerValue))
     throw InputError(path, fmt::format("{} is {} bytes; {} x {} values of {} bytes need {}", link,
                                        data.size(), sx, sy, bytesPerValue, cells * bytesPerValue));
-  if (xml.find("MD5ChecksumPointData>") != std::string::npos &&
-      element(xml, "MD5ChecksumPointData", path) != md5Hex(data))
+  if (xml.find({"Record3", "DataLink", "MD5ChecksumPointData"}) &&
+      xml.text({"Record3", "DataLink", "MD5ChecksumPointData"}) != md5Hex(data))
     throw InputError(path, link + " does not match main.xml's MD5ChecksumPointData");
 
   GridSpec g;

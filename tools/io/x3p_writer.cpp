@@ -15,6 +15,7 @@
 #include "tools/io/atomic_file.h"
 #include "tools/io/md5.h"
 #include "tools/io/xml_text.h"
+#include "tools/io/zip_error.h"
 
 namespace scallop {
 
@@ -53,13 +54,7 @@ class Archive {
   Archive(const std::string& temp, const std::string& path) : path_(path) {
     int error = 0;
     zip_ = zip_open(temp.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
-    if (!zip_) {
-      zip_error_t e;
-      zip_error_init_with_code(&e, error);
-      const std::string why = zip_error_strerror(&e);
-      zip_error_fini(&e);
-      throw InputError(path, "cannot create the zip archive: " + why);
-    }
+    if (!zip_) throw InputError(path, "cannot create the zip archive: " + zipErrorText(error));
   }
   ~Archive() {
     if (zip_) zip_discard(zip_);

@@ -4,14 +4,10 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
-#include <filesystem>
 
 #include "base/input_error.h"
-#include "tools/io/file_names.h"
 #include "tools/io/height_export.h"
-#include "tools/io/height_images.h"
-#include "tools/io/x3p_reader.h"
-#include "tools/io/x3p_writer.h"
+#include "tools/io/height_formats.h"
 
 namespace scallop::python {
 
@@ -93,37 +89,29 @@ py::array_t<double> centresY(const GridSpec& g) {
 
 // --- read_heights / write_heights -------------------------------------------------
 
-py::tuple readHeights(const std::string& path) {
+py::tuple readHeights(const std::string& path, bool withFrame) {
   ZMap map;
+  std::string frame;
   {
     py::gil_scoped_release release;
-    map = lowerExtension(path) == ".x3p" && std::filesystem::exists(path) ? readHeightsX3p(path)
-                                                                          : readHeightFile(path);
+    map = readHeightFile(path, &frame);
   }
   const GridSpec grid = map.grid();
+  if (withFrame) return py::make_tuple(heightsView(std::move(map)), grid, frame);
   return py::make_tuple(heightsView(std::move(map)), grid);
 }
 
 void writeHeights(const std::string& path, const py::handle& heights, const py::handle& grid,
-                  const std::string& title) {
+                  const std::string& title, const std::string& frame) {
   const GridSpec g = gridFromPython(grid, "grid");
   const ZMap map = zmapFromArray(heights, g, "heights");
   if ((g.nx > 0 && g.nx != map.nx()) || (g.ny > 0 && g.ny != map.ny()))
     throw InputError("heights", fmt::format("has the shape ({}, {}), but the grid is ny = {} by "
                                             "nx = {} cells",
                                             map.ny(), map.nx(), g.ny, g.nx));
-  const std::string ext = lowerExtension(path);
+  const HeightFormat& format = heightFormatOf(path, false);
   py::gil_scoped_release release;
-  if (ext == ".gsf")
-    writeHeightsGsf(map, path, title);
-  else if (ext == ".exr")
-    writeHeightsExr(map, path);
-  else if (ext == ".x3p")
-    writeHeightsX3p(map, path, title);
-  else if (ext == ".png" || ext == ".tif" || ext == ".tiff")
-    writeHeights16(map, path);
-  else
-    throw InputError(path, "expected a .gsf, .exr, .x3p, .png, .tif or .tiff file name");
+  format.write(map, path, title, frame);
 }
 
 }  // namespace
@@ -197,22 +185,26 @@ void bindHeightArrays(py::module_& m) {
                            g.spacing, g.nx, g.ny);
       });
 
-  m.def("read_heights", &readHeights, py::arg("path"),
-        "read_heights(path) -> (heights, grid)\n\n"
+  m.def("read_heights", &readHeights, py::arg("path"), py::arg("with_frame") = false,
+        "read_heights(path, with_frame=False) -> (heights, grid) or (heights, grid, frame)\n\n"
         "Reads a height map by the extension: .gsf (Gwyddion Simple Field) or .exr as\n"
         "scallop writes them, or .x3p (ISO 25178-72, float64 or float32 points).\n"
+        "With with_frame, also the frame the heights are in (a job's grid.frame as the\n"
+        "file names it; '' for a map seen from above), for write_heights(frame=...).\n"
         "heights is float64 (ny, nx), mm, row 0 = the largest y (a view of the map read,\n"
         "whose base is a HeightBuffer); grid is its Grid. GSF and EXR hold float32, so\n"
         "their heights are float32 values. Raises InputError naming the file for a\n"
         "missing, unreadable or inconsistent file.");
   m.def("write_heights", &writeHeights, py::arg("path"), py::arg("heights"), py::arg("grid"),
-        py::arg("title") = "scallop heights",
-        "write_heights(path, heights, grid, title='scallop heights')\n\n"
+        py::arg("title") = "scallop heights", py::arg("frame") = "",
+        "write_heights(path, heights, grid, title='scallop heights', frame='')\n\n"
         "Writes a height map (float64-convertible (ny, nx), mm, row 0 = the largest y) on\n"
         "grid (a Grid, or a dict with \"origin\" and \"spacing\" like report[\"grid\"]) in\n"
         "the format the extension names: .gsf (Gwyddion Simple Field, float32 metres),\n"
         ".exr (float32 channel Z, mm), .x3p (ISO 25178-72, float64 metres), .png/.tif\n"
-        "(16-bit grey levels, see docs/formats.md). The file appears only when complete.\n"
+        "(16-bit grey levels, see docs/formats.md). frame: the frame the heights are in\n"
+        "(read_heights(..., with_frame=True)), kept in the file. The file appears only\n"
+        "when complete.\n"
         "Raises InputError naming the field or the file.");
 }
 

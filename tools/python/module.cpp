@@ -1,4 +1,4 @@
-// The Python module `scallop` (issue 16): the simulator for scripts and notebooks.
+// The Python module `scallop`: the simulator for scripts and notebooks.
 // simulate() runs a job in memory and returns NumPy heights; interval() and stats() are
 // `scallop interval --json` and `scallop stats --json`'s surface_stats; read_heights()
 // and write_heights() exchange height files; gouge(), validate() and bench() are those

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <sstream>
 
 #include "analysis/pass_section.h"
 #include "base/constants.h"
+#include "base/fnv1a.h"
 #include "base/input_error.h"
 #include "sweep/cutter_shapes.h"
 #include "sweep/raster.h"
@@ -32,8 +32,8 @@ RasterSpec b1Raster() {
   return spec;
 }
 
-// B6's taper barrel: form radius 250 mm, tip radius 2 mm, taper 10 deg (issue 33's
-// figures), reference diameter 8 mm (where the form arc's tangent makes the taper with
+// B6's taper barrel: form radius 250 mm, tip radius 2 mm, taper 10 deg (a catalogue
+// tool's figures), reference diameter 8 mm (where the form arc's tangent makes the taper with
 // the axis), flute length 20 mm.
 Cutter b6TaperBarrel() {
   TaperBarrelShape shape;
@@ -138,7 +138,7 @@ FreeformPasses freeformPasses(const Cutter& cutter, const Box3& stock, double pa
 }
 
 Vec3 leanedNormal(double x, double y, double leanDeg) {
-  const double lean = leanDeg * kPi / 180;
+  const double lean = degToRad(leanDeg);
   // Unit normal of z = f(x, y): (-f_x, -f_y, 1) normalised.
   const double fx = 0.5 * (2 * kPi / 10) * std::cos(2 * kPi * x / 10) * std::cos(2 * kPi * y / 14);
   const double fy = -0.5 * (2 * kPi / 14) * std::sin(2 * kPi * x / 10) * std::sin(2 * kPi * y / 14);
@@ -326,16 +326,9 @@ GridSpec stampWindow(const BenchCase& bench, double side) {
 }
 
 uint64_t heightsHash(const ZMap& map) {
-  uint64_t h = 1469598103934665603ull;
-  for (double z : map.heights()) {
-    uint64_t bits;
-    std::memcpy(&bits, &z, sizeof bits);
-    for (int k = 0; k < 8; ++k) {
-      h ^= (bits >> (8 * k)) & 0xff;
-      h *= 1099511628211ull;
-    }
-  }
-  return h;
+  Fnv1a hash;
+  for (double z : map.heights()) hash.addBytesOf(z);
+  return hash.value;
 }
 
 }  // namespace scallop

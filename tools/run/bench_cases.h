@@ -58,11 +58,11 @@ const std::vector<std::string>& defaultBenchCaseNames();
 //      bull at 0.5 mm on a plane at that lead (analysis/pass_section.h); 2 um.
 //  B7: B1's raster with a tapered ball (tip radius 1 mm, taper 5 deg per side, flute
 //      length 12 mm); 1 um.
-//  B8: surf-topo's face-milling case A2 (issue 35; b8FaceMill in the .cpp): a face mill
+//  B8: surf-topo's face-milling case A2 (b8FaceMill in the .cpp): a face mill
 //      with two round inserts (bull R 10, r 5, edge_span the corner arc), the second
 //      insert 26 um nearer the axis and 9 um higher, fz 0.4 mm, ap 0.4 mm, CCW, one pass
 //      along +y at x = 5 over a 5 x 5 mm stock (--area A: A x A) at 25 um (4e4 cells).
-//  B9: a program of 10^6 moves (issue 37): ball R1 finishing a 100 x 50 mm stock (--area A:
+//  B9: a program of 10^6 moves: ball R1 finishing a 100 x 50 mm stock (--area A:
 //      A x A/2 mm), passes along X 0.1 mm apart with a point every 0.05 mm on
 //      finishingHeight, written by finishingGcode and read through the G-code reader;
 //      spacing 20 um (1.25e7 cells).

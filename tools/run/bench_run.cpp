@@ -209,7 +209,7 @@ json caseJson(const CaseResult& r) {
       {"threads", r.threads},
       {"seconds_1_thread", r.single.seconds},
       {"heights_hash", fmt::format("{:016x}", t.hash)}};
-  // Issue 37's figures: scene build in moves a second (the program's cutting moves), and
+  // The scene's figures: build in moves a second (the program's cutting moves), and
   // bytes a move, the scene's own accounting and the peak beyond the map's heights.
   const double moves = double(std::max<size_t>(1, r.bench.path.cuttingMoves()));
   const double mapBytes = 8.0 * double(r.bench.grid.cells());

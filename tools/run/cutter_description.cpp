@@ -75,6 +75,43 @@ std::string cutterTable(const Cutter& cutter) {
   return out;
 }
 
+json cutterShapesDocument() {
+  json doc = json::array();
+  for (const CutterShape& shape : cutterShapes()) {
+    json keys = json::array(), pictures = json::array();
+    for (const CutterKey& key : shape.keys)
+      keys.push_back({{"name", key.name}, {"meaning", key.meaning}, {"required", key.required}});
+    for (const CutterPicture& picture : shape.pictures)
+      pictures.push_back({{"file", std::string("docs/images/cutters/") + picture.file + ".svg"},
+                          {"title", picture.title},
+                          {"tool", json::parse(picture.tool)}});
+    doc.push_back(
+        {{"type", shape.type}, {"summary", shape.summary}, {"keys", keys}, {"pictures", pictures}});
+  }
+  return doc;
+}
+
+std::string cutterShapesText() {
+  std::string out;
+  for (const CutterShape& shape : cutterShapes()) {
+    out += fmt::format("{}: {}\n", shape.type, shape.summary);
+    for (const CutterKey& key : shape.keys)
+      out +=
+          fmt::format("  {:<19}{}{}\n", key.name, key.meaning, key.required ? "" : " [optional]");
+    for (const CutterPicture& picture : shape.pictures)
+      out += fmt::format("  e.g. {}\n", picture.tool);
+  }
+  return out;
+}
+
+std::string cutterPictureLines() {
+  std::string out;
+  for (const CutterShape& shape : cutterShapes())
+    for (const CutterPicture& picture : shape.pictures)
+      out += fmt::format("{}\t{}\t{}\n", picture.file, picture.title, picture.tool);
+  return out;
+}
+
 void writeCutterSvg(const Cutter& cutter, const std::string& title, const std::string& path) {
   writeSvgFile(path, cutterProfileSvg(cutter, title));
 }

@@ -22,6 +22,14 @@ nlohmann::json cutterDocument(const Cutter& cutter);
 // The same for people: one line per segment.
 std::string cutterTable(const Cutter& cutter);
 
+// The cutter-shape table (tools/io/job_cutter_shapes.h) for `scallop cutter --list`:
+// each type with its summary, its keys (meaning, unit, range; required or not) and its
+// example pictures, as JSON and as text for people.
+nlohmann::json cutterShapesDocument();
+std::string cutterShapesText();
+// One line per picture, "file<TAB>title<TAB>tool", for scripts/cutter-images.sh.
+std::string cutterPictureLines();
+
 // Writes the profile picture to `path` atomically.
 void writeCutterSvg(const Cutter& cutter, const std::string& title, const std::string& path);
 

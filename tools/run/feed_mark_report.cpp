@@ -245,7 +245,7 @@ FeedMarkPrediction passPrediction(const Job& job, size_t first, size_t last) {
   const double length = std::hypot(dx, dy);
   const double fx = dx / length, fy = dy / length;  // the feed; across it (-fy, fx)
   const double along = axis.x * fx + axis.y * fy, across = -axis.x * fy + axis.y * fx;
-  constexpr double kDeg = 180 / kPi;
+  constexpr double kDeg = kDegPerRad;
   const double tiltDeg = std::asin(std::clamp(across, -1.0, 1.0)) * kDeg;
   const double leadDeg = std::atan2(along, axis.z) * kDeg;
   return predictFeedMarks(cutter, leadDeg, std::fabs(across) <= 1e-12 ? 0.0 : tiltDeg, fz);

@@ -8,6 +8,7 @@
 #include "analysis/contact_curvature.h"
 #include "analysis/pass_section.h"
 #include "analysis/path_interval.h"
+#include "base/constants.h"
 #include "base/input_error.h"
 
 namespace scallop {
@@ -74,7 +75,7 @@ IntervalComparison compareIntervals(const SimulatedPass& pass, double scallopMm)
       simulate(p);
     }
   }
-  // The procedures for every cutter, lead and tilt (issue 33).
+  // The procedures for every cutter, lead and tilt.
   const ProcedureResult exact = halfIntervalExact(c, pass.leadDeg(), pass.tiltDeg(), scallopMm);
   simulate({"exact", kExactProcedureSource, exact.applicable, exact.reason, exact.value, {}});
   const ProcedureResult osculating =
@@ -150,7 +151,7 @@ void checkAngleOption(const char* option, double deg) {
 Cutter cutterFromOptions(const std::string& tool, double radius, double cornerRadius,
                          bool cornerGiven, const IntervalFieldNames& names) {
   const CutterType type = parseCutterType(tool, names.tool);
-  if (!(radius > 0) || !(radius <= 1e6))
+  if (!(radius > 0) || !(radius <= kMaxMagnitudeMm))
     throw InputError(names.radius,
                      "must be a length in (0, 1e6] mm, got " + fmt::format("{:g}", radius));
   if (type != CutterType::Bull) {
@@ -179,7 +180,7 @@ IntervalComparison compareIntervals(const IntervalRequest& request,
     throw InputError(names.scallop,
                      "must be a height > 0 mm, got " + fmt::format("{:g}", request.scallopMm));
   if (request.feedPerToothGiven &&
-      (!(request.feedPerToothMm > 0) || !(request.feedPerToothMm <= 1e6)))
+      (!(request.feedPerToothMm > 0) || !(request.feedPerToothMm <= kMaxMagnitudeMm)))
     throw InputError(names.feedPerTooth, "must be a feed per tooth > 0 mm (at most 1e6), got " +
                                              fmt::format("{:g}", request.feedPerToothMm));
   CutterTeeth teeth;

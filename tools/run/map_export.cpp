@@ -2,10 +2,8 @@
 
 #include "analysis/surface_metrology.h"
 #include "base/input_error.h"
-#include "tools/io/file_names.h"
 #include "tools/io/height_export.h"
-#include "tools/io/height_images.h"
-#include "tools/io/x3p_writer.h"
+#include "tools/io/height_formats.h"
 #include "tools/run/profile_roughness.h"
 
 namespace scallop {
@@ -29,18 +27,7 @@ ZMap cropped(const ZMap& map, const CellRegion& region) {
 
 void exportHeightMap(const ZMap& map, const std::string& path, const std::string& title,
                      const std::string& frame) {
-  const std::string ext = lowerExtension(path);
-  if (ext == ".x3p") {
-    writeHeightsX3p(map, path, frame.empty() ? title : title + "; heights in the frame: " + frame);
-  } else if (ext == ".png" || ext == ".tif" || ext == ".tiff") {
-    writeHeights16(map, path, frame);
-  } else if (ext == ".gsf") {
-    writeHeightsGsf(map, path, title, frame);
-  } else if (ext == ".exr") {
-    writeHeightsExr(map, path, frame);
-  } else {
-    throw InputError(path, "expected a file name ending in .x3p, .png, .tif, .tiff, .gsf or .exr");
-  }
+  heightFormatOf(path, false).write(map, path, title, frame);
 }
 
 void exportProfileCsv(const ZMap& map, const std::vector<double>& line, double stepMm,

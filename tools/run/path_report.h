@@ -1,5 +1,5 @@
 // The report.json sections of a simulation that come from the job's path file and
-// design surface (issue 6): path-file warnings, and the design comparison with its
+// design surface: path-file warnings, and the design comparison with its
 // picture DIR/deviation.png.
 #pragma once
 

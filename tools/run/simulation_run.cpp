@@ -10,6 +10,7 @@
 #include "raycast/simulation.h"
 #include "raycast/stamp_caster.h"
 #include "tools/io/atomic_file.h"
+#include "tools/io/height_formats.h"
 #include "tools/io/height_images.h"
 #include "tools/io/job.h"
 #include "tools/render/preview_png.h"
@@ -117,8 +118,10 @@ json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& 
   const fs::path dir(settings.outDir);
   const std::string title = simulationTitle(job);
   const std::string frame = job.frame ? job.frame->describe() : "";
-  writeHeightsExr(map, (dir / "heights.exr").string(), frame);
-  writeHeightsGsf(map, (dir / "heights.gsf").string(), title, frame);
+  for (const char* name : {"heights.exr", "heights.gsf"}) {
+    const std::string path = (dir / name).string();
+    heightFormatOf(path, false).write(map, path, title, frame);
+  }
   PreviewOptions preview;
   preview.title = previewTitle(title);
   preview.uncutHeight = job.stockTop();  // the map's initial height (raycast/simulation.h)

@@ -241,7 +241,7 @@ void seed001(Run& run) {
   for (ValidationTable* t : {&t1, &t2, &t3, &t4}) run.tables.push_back(*t);
 }
 
-// Beyond the seeds: the procedures that take any cutter, lead and tilt (issue 33), each
+// Beyond the seeds: the procedures that take any cutter, lead and tilt, each
 // L/2 beside the simulated exact one and the scallop two simulated passes 2 L/2 apart
 // leave. The conditions cover what seed 000's procedures cannot: tilts and a flat end
 // mill.

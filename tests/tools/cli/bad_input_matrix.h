@@ -1,4 +1,4 @@
-// The bad-input matrix (issue 8): one row per hostile input to one entry point, run
+// The bad-input matrix: one row per hostile input to one entry point, run
 // through the real `scallop` binary. Every row must give its exit status (1 bad
 // input, 2 usage error; CONVENTIONS.md), nothing on stdout, for status 1 exactly one
 // line on stderr, "scallop: error: WHERE: WHAT", naming what the row lists, and no

@@ -122,7 +122,7 @@ TEST(BenchCases, FreeformPathsFollowTheSurfaceAlongX) {
   EXPECT_EQ(makeBenchCase("B2", options).path.cuttingMoves(), 2u * 180u);
 }
 
-// B9 is issue 37's finishing program read back through the G-code reader: ball R1,
+// B9 is a finishing program of a million moves read back through the G-code reader: ball R1,
 // passes along X 0.1 mm apart over an A x A/2 stock, a plunge and then a G1 every 0.05
 // mm with the tip on the surface (to the text's 4 decimals), on a 20 um grid; only run
 // when asked for.

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "base/version.h"
 #include "tests/support/cli_harness.h"
 #include "tools/io/height_images.h"
 
@@ -59,6 +61,30 @@ TEST_F(Cli, HelpTeachesEveryOptionWithUnits) {
   EXPECT_EQ(sim.status, 0);
   for (const char* word : {"--output", "--threads", "--json", "mm", "heights.exr", "report.json"})
     EXPECT_NE(sim.out.find(word), std::string::npos) << word;
+}
+
+// The top-level --help lists each command on one line (its summary sentence) and fits a
+// terminal; the job keys stay in `simulate --help`.
+TEST_F(Cli, TopLevelHelpIsOneLineACommand) {
+  const CliRun top = run("--help");
+  ASSERT_EQ(top.status, 0);
+  EXPECT_LE(std::count(top.out.begin(), top.out.end(), '\n'), 40) << top.out;
+  EXPECT_EQ(top.out.find("tooth_offsets"), std::string::npos) << top.out;
+  EXPECT_NE(run("simulate --help").out.find("tooth_offsets"), std::string::npos);
+  for (const char* command : {"simulate", "surface", "gouge", "interval", "validate", "bench",
+                              "merge", "stats", "export", "collect", "cutter"}) {
+    const size_t at = top.out.find(std::string("\n  ") + command + " ");
+    ASSERT_NE(at, std::string::npos) << command << " is not listed: " << top.out;
+    const size_t end = top.out.find('\n', at + 1);
+    // One line: the summary ends with its sentence's full stop.
+    EXPECT_EQ(top.out[end - 1], '.') << top.out.substr(at, end - at);
+  }
+}
+
+TEST_F(Cli, VersionPrintsTheProjectVersion) {
+  const CliRun r = run("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, std::string("scallop ") + scallop::kScallopVersion + "\n");
 }
 
 TEST_F(Cli, UnknownMethodIsAUsageErrorAndStampCannotBeTiled) {

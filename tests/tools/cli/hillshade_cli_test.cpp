@@ -9,13 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "base/constants.h"
 #include "tests/support/cli_harness.h"
 #include "tools/io/height_images.h"
 
 namespace scallop::test {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180;
+constexpr double kDeg = kRadPerDeg;
 
 class HillshadeCli : public CliFixture {
  protected:

@@ -19,6 +19,7 @@
 
 #include "analysis/path_interval.h"
 #include "analysis/simulated_interval.h"
+#include "base/constants.h"
 #include "tests/support/cli_harness.h"
 
 namespace fs = std::filesystem;
@@ -107,7 +108,7 @@ TEST_F(IntervalCli, BallInAnyPostureIsSeed001Eq1) {
 
 TEST_F(IntervalCli, InclinedFlatEndMillIsTheEllipse) {
   const json doc = runJson("--tool flat --radius 3 --lead 10 --scallop 0.05");
-  const double s = 3 * std::sin(10 * M_PI / 180);
+  const double s = 3 * std::sin(degToRad(10));
   EXPECT_NEAR(doc["simulated_half_interval"].get<double>(),
               3 * std::sqrt(1 - std::pow((s - 0.05) / s, 2)), 1e-6);
   for (const json& p : doc["procedures"]) {
@@ -166,7 +167,7 @@ TEST_F(IntervalCli, FeedMarksBesideTheInterval) {
   EXPECT_EQ(f["spacing"], 0.1);
   EXPECT_NEAR(f["height"].get<double>(), 3 - std::sqrt(9 - 0.0025), 1e-15);
   EXPECT_NEAR(f["height_parabola"].get<double>(), 0.01 / 24, 1e-18);
-  const double star = f["runout_threshold"].get<double>(), l = 15 * M_PI / 180;
+  const double star = f["runout_threshold"].get<double>(), l = degToRad(15);
   EXPECT_NEAR(2 * star * std::sin(l),
               (0.01 - 4 * star * star * std::cos(l) * std::cos(l)) / (2 * 3), 1e-15);
   // A bull's marks are its corner's; above the threshold one tooth cuts, 2 fz apart.

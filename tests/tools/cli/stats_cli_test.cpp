@@ -197,6 +197,11 @@ TEST_F(StatsCli, ExportedFilesReadBackToTheSameStatistics) {
   // GSF (float32 metres) to EXR (float32 mm) rounds once more: float precision.
   ASSERT_EQ(run("export " + gsf + " --to " + path("from-gsf.exr")).status, 0);
   expectSameWithinFloat(stats(path("from-gsf.exr"))["surface_stats"], stats(gsf)["surface_stats"]);
+  // X3P (float64 metres) is read by stats too (the height-format table): the EXR's
+  // float32 millimetres through m and back, within a rounding of each.
+  ASSERT_EQ(run("export " + path("out/heights.exr") + " --to " + path("h.x3p")).status, 0);
+  expectSameWithinFloat(stats(path("h.x3p"))["surface_stats"],
+                        stats(path("out/heights.exr"))["surface_stats"]);
   const CliRun csv =
       run("export " + gsf + " --to " + path("p.csv") + " --profile 0.02 2.5 5.98 2.5 --cutoff 0.8");
   ASSERT_EQ(csv.status, 0) << csv.err;

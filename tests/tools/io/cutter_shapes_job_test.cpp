@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "base/constants.h"
 #include "base/input_error.h"
 #include "sweep/apt_cutter.h"
 #include "sweep/cutter_shapes.h"
@@ -133,15 +134,15 @@ TEST(CutterShapesJob, ErrorsNameTheField) {
 // A CL file's 7-value CUTTER and the job's "apt" tool with the same values are the same
 // cutter, for each kind the convention describes.
 TEST(CutterShapesJob, AptCutterInAClFileEqualsTheJobs) {
-  const double tbD = 2 * 1.5 * (1 - std::sin(7 * M_PI / 180)) / std::cos(7 * M_PI / 180);
+  const double tbD = 2 * 1.5 * (1 - std::sin(degToRad(7))) / std::cos(degToRad(7));
   const std::vector<std::vector<double>> kinds = {
-      {6, 3, 0, 3, 0, 0, 20},                               // ball
-      {6, 0, 0, 0, 0, 0, 20},                               // flat
-      {6, 1, 2, 1, 0, 0, 20},                               // bull
-      {tbD, 1.5, 0, 1.5, 0, 7, 25},                         // tapered ball
-      {6, 1, 3 - 0.8390996311772800, 1, 0, 10, 20},         // tapered bull
-      {6, 0, 0, 0, 30, 0, 10},                              // 120-degree V-bit
-      {6, 1, 2, 2 / std::cos(30 * M_PI / 180), 30, 0, 10},  // bottom cone, rounded corner
+      {6, 3, 0, 3, 0, 0, 20},                            // ball
+      {6, 0, 0, 0, 0, 0, 20},                            // flat
+      {6, 1, 2, 1, 0, 0, 20},                            // bull
+      {tbD, 1.5, 0, 1.5, 0, 7, 25},                      // tapered ball
+      {6, 1, 3 - 0.8390996311772800, 1, 0, 10, 20},      // tapered bull
+      {6, 0, 0, 0, 30, 0, 10},                           // 120-degree V-bit
+      {6, 1, 2, 2 / std::cos(degToRad(30)), 30, 0, 10},  // bottom cone, rounded corner
   };
   for (const auto& v : kinds) {
     std::ostringstream cl;

@@ -274,12 +274,12 @@ TEST(GcodeProgram, TcpOnMovesAreTheRotaryPoseCurve) {
   ASSERT_EQ(turn.rotary, 1u);
   const RotaryMotion& r = f.path.rotary[0];
   EXPECT_TRUE(r.tcp);
-  EXPECT_EQ(r.tilt1, 10 * kPi / 180);
-  EXPECT_EQ(r.spin1, -20 * kPi / 180);
+  EXPECT_EQ(r.tilt1, degToRad(10));
+  EXPECT_EQ(r.spin1, degToRad(-20));
   EXPECT_EQ(turn.to.tip, (Vec3{2, 0, 1}));  // TCP on: X Y Z are the tip
   const PoseCurve curve = PoseCurve::ofMove(f.path, turn);
   const Vec3 half = curve.axis(0.5);
-  const double B = 5 * kPi / 180, C = -10 * kPi / 180;
+  const double B = degToRad(5), C = degToRad(-10);
   EXPECT_NEAR(half.x, -std::cos(C) * std::sin(B), 1e-15);
   EXPECT_NEAR(half.y, std::sin(C) * std::sin(B), 1e-15);
   // The next move keeps the angles: a constant axis, no rotary motion.
@@ -298,7 +298,7 @@ TEST(GcodeProgram, TcpOffMovesFollowTheForwardKinematics) {
   const ToolPathFile f = parse("G0 X0 Y0 Z1 A15 C30\nG1 X2\nG1 X3 C40\n", o);
   ASSERT_EQ(f.path.moves.size(), 2u);
   const TableMachine& m = o.machine->geometry;
-  const double A = 15 * kPi / 180, C = 30 * kPi / 180;
+  const double A = degToRad(15), C = degToRad(30);
   EXPECT_EQ(f.path.moves[0].to.tip, machineTip(m, {2, 0, 1}, A, C));
   EXPECT_EQ(f.path.moves[0].rotary, 0u);
   // The angles change with TCP off: the joints move linearly, the tip follows the forward
@@ -306,7 +306,7 @@ TEST(GcodeProgram, TcpOffMovesFollowTheForwardKinematics) {
   EXPECT_FALSE(f.path.rotary.at(0).tcp);
   const PoseCurve curve = PoseCurve::ofMove(f.path, f.path.moves[1]);
   EXPECT_FALSE(curve.linearTip());
-  EXPECT_EQ(curve.tip(0.5), machineTip(m, {2.5, 0, 1}, A, 35 * kPi / 180));
+  EXPECT_EQ(curve.tip(0.5), machineTip(m, {2.5, 0, 1}, A, degToRad(35)));
   const std::vector<SweptMove> swept = sweepToolPath(Cutter::make(CutterType::Ball, 1), f.path);
   ASSERT_EQ(swept.size(), 2u);
   EXPECT_TRUE(swept[1].turning());

@@ -69,7 +69,7 @@ TEST(GcodeReader, FullCircleG2IsChordedWithinTheTolerance) {
   const double tol = 1e-4, radius = 5;
   const ToolPathFile f = parse("G0 X5 Y0 Z-1\nG2 X5 Y0 I-5 J0\n", tol);
   // n = ceil(2 pi / (2 acos(1 - tol / r))) chords.
-  const int n = int(std::ceil(2 * M_PI / (2 * std::acos(1 - tol / radius))));
+  const int n = int(std::ceil(2 * kPi / (2 * std::acos(1 - tol / radius))));
   ASSERT_EQ(int(f.path.moves.size()), n);
   expectOnCircle(f, 0, 0, radius, tol);
   // Clockwise seen from +Z: from (5, 0) the first step goes towards -y.

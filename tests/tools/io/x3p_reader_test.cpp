@@ -12,8 +12,9 @@
 #include <string>
 
 #include "base/input_error.h"
-#include "tests/support/cli_harness.h"
 #include "raycast/zmap.h"
+#include "tests/support/cli_harness.h"
+#include "tests/support/input_error_message.h"
 #include "tests/support/sampled_field.h"
 #include "tools/io/x3p_writer.h"
 
@@ -27,12 +28,7 @@ ZMap sampleMap() {
 }
 
 std::string readError(const std::string& path) {
-  try {
-    readHeightsX3p(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return inputErrorMessage([&] { readHeightsX3p(path); });
 }
 
 class X3pReader : public CliFixture {};

@@ -88,6 +88,10 @@ def rewrite_x3p(src, dst, change):
     (lambda n, d: d.replace(b"<SizeX>", b"<SizeX>x") if n == "main.xml" else d, "SizeX is"),
     (lambda n, d: d.replace(b"<FeatureType>SUR", b"<FeatureType>PRF") if n == "main.xml" else d,
      "FeatureType is not SUR"),
+    (lambda n, d: d.replace(b"</SizeX>", b"") if n == "main.xml" else d,
+     "main.xml is not well-formed XML"),
+    (lambda n, d: d.replace(b"PointDataLink", b"PointLink") if n == "main.xml" else d,
+     "main.xml has no PointDataLink element"),
 ])
 def test_a_damaged_x3p_is_refused_naming_what_is_wrong(tmp_path, result, change, message):
     good = tmp_path / "good.x3p"
@@ -121,7 +125,7 @@ def test_io_errors_name_the_file_or_argument(tmp_path, result):
     bad.write_bytes(b"not a gsf file at all")
     with pytest.raises(scallop.InputError, match="bad.gsf"):
         scallop.read_heights(str(bad))
-    with pytest.raises(scallop.InputError, match=r"h\.bmp: expected a \.gsf"):
+    with pytest.raises(scallop.InputError, match=r"h\.bmp: expected a file name ending in \.x3p"):
         scallop.write_heights(str(tmp_path / "h.bmp"), h, g)
     with pytest.raises(scallop.InputError, match="^heights: has the shape"):
         scallop.write_heights(str(tmp_path / "h.gsf"), h[:, 1:], g)
@@ -143,3 +147,15 @@ def test_help_documents_every_function():
     for cls in (scallop.Result, scallop.Grid, scallop.HeightBuffer):
         assert cls.__doc__
     assert scallop.__version__
+
+
+@pytest.mark.parametrize("ext,kept", [(".gsf", True), (".exr", True), (".x3p", False)])
+def test_write_heights_keeps_the_frame_where_the_format_can(tmp_path, result, ext, kept):
+    frame = "origin (1, 2, 3) mm, u (1, 0, 0), normal (0, 0, 1)"
+    path = str(tmp_path / ("h" + ext))
+    scallop.write_heights(path, result.heights, result.grid, frame=frame)
+    heights, grid, back = scallop.read_heights(path, with_frame=True)
+    assert back == (frame if kept else "")
+    assert grid.nx == result.grid.nx and grid.ny == result.grid.ny
+    scallop.write_heights(str(tmp_path / ("plain" + ext)), result.heights, result.grid)
+    assert scallop.read_heights(str(tmp_path / ("plain" + ext)), with_frame=True)[2] == ""

@@ -1,4 +1,4 @@
-// Determinism (issue 8): the same job gives bit-identical outputs on 1 and 2 threads
+// Determinism: the same job gives bit-identical outputs on 1 and 2 threads
 // and from one run to the next. heights.gsf and preview.png are compared byte for
 // byte; heights.exr by its pixels and every header attribute except DateTime (the
 // one field OpenImageIO fills from the clock); report.json with its timings, the

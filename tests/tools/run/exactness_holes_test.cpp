@@ -84,7 +84,7 @@ TEST_F(ExactnessHoles, TiltedFlatEndMillInItsBottomPlane) {
   const HuntCurve clCurve =
       hunt::straightCurve(p0, p1, {0.041761916319, -0.087156035725, 0.995318927672},
                           {0.041761916319, -0.087156035725, 0.995318927672});
-  const double A = -5.546 * kPi / 180, C = -25.602 * kPi / 180;
+  const double A = degToRad(-5.546), C = degToRad(-25.602);
   const HuntCurve machineCurve = hunt::rotaryCurve(true, p0, p1, A, A, C, C);
   expectBracketed(fromCl, flat, clCurve, 0, 1e-6);
   expectBracketed(fromGcode, flat, machineCurve, 0, 1e-6);

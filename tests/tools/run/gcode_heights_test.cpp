@@ -156,8 +156,8 @@ void GcodeHeights::expectFiveAxisAgrees(bool ac) {
   auto round6 = [](double v) { return std::stod(fmt::format("{:.6f}", v)); };
   for (size_t k = 0; k + 1 < points.size(); ++k) {
     const Point a = points[k], b = points[k + 1];
-    const double t0 = round6(a.tilt) * kPi / 180, t1 = round6(b.tilt) * kPi / 180;
-    const double c0 = round6(a.c) * kPi / 180, c1 = round6(b.c) * kPi / 180;
+    const double t0 = degToRad(round6(a.tilt)), t1 = degToRad(round6(b.tilt));
+    const double c0 = degToRad(round6(a.c)), c1 = degToRad(round6(b.c));
     curves.push_back(
         {{round6(a.x), round6(a.y), round6(a.z)},
          {round6(b.x), round6(b.y), round6(b.z)},

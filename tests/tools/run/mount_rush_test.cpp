@@ -1,4 +1,4 @@
-// The mount_rush check (issue 6, item 3): OpenCAMLib's drop-cutter paths over a real
+// The mount_rush check: OpenCAMLib's drop-cutter paths over a real
 // STL relief (tests/data/mount_rush, README there), simulated exactly and compared
 // with the design's upper envelope. Every gouge the simulation finds must be chordal:
 // the linear move between two contact points dips below the height at which the

@@ -1,4 +1,4 @@
-// Resource guards (issue 8): a path whose culling scene cannot fit in memory is refused
+// Resource guards: a path whose culling scene cannot fit in memory is refused
 // before anything is built, naming the bytes; and a tool-path file is read as a stream,
 // so reading it costs memory per move, not per byte of text.
 #include <gtest/gtest.h>
