@@ -55,9 +55,10 @@ Command addRenderCommand(CLI::App& parent, CommonOptions& common) {
       ".x3p, the 16-bit .png/.tif of `scallop export`, or a folder of `simulate --bands`\n"
       "files (not merged). The surface is bilinear between the cell centres (cells without\n"
       "a height, NaN, leave a hole). Anti-aliasing: the surface is traced from block means\n"
-      "of k x k cells, k = the pixel's footprint over the spacing (a mip-map level), at a\n"
-      "fixed 2 x 2 grid of samples a pixel, so marks finer than a pixel are averaged, not\n"
-      "aliased into moire. The same bytes whatever --threads. Angles in degrees: azimuth\n"
+      "of k x k cells, k = the finest pixel footprint over the spacing, smoothed by\n"
+      "[1 2 1]/4 along x and y (a prefiltered mip-map level), at a fixed 2 x 2 grid of\n"
+      "samples a pixel, so marks finer than a pixel are averaged, not aliased into moire;\n"
+      "render a --region to see them. The same bytes whatever --threads. Angles in degrees: azimuth\n"
       "clockwise from north (+y), elevation above the horizon in (0, 90]; `--view 180 90\n"
       "--projection ortho` is the map seen from straight above, north up.");
   app->add_option("HEIGHTS", args->request.heights, "Height map file, or a folder of band files")

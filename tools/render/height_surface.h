@@ -6,9 +6,10 @@
 // without height (NaN: no material) is left out, a hole in the surface.
 //
 // The nodes are a map's cell centres, or a coarser level of the map whose nodes are the
-// means of k x k blocks of cells (mip-mapping): a picture traced from the level whose
-// nodes are about a pixel apart does not alias marks finer than a pixel into moiré, and
-// the surface it traces is a few pixels' worth of nodes however large the map.
+// means of k x k blocks of cells smoothed by [1 2 1] / 4 along x and y (mip-mapping with
+// a prefilter): a picture traced from the level whose nodes are about a pixel apart does
+// not alias marks finer than a pixel into moiré, and the surface it traces is a few
+// pixels' worth of nodes however large the map.
 //
 // World frame (tools/render/render_camera.h): x, y as the map's, z = zScale (height -
 // zOrigin), the height exaggerated about zOrigin.
@@ -26,7 +27,8 @@ namespace scallop {
 class SurfaceGrid {
  public:
   // The level of `region` of `map` with nodes the means of k x k blocks of cells (the
-  // heights there that are not NaN; NaN when all are), node (0, 0) the block at the
+  // heights there that are not NaN; NaN when all are), then for k > 1 smoothed by
+  // [1 2 1] / 4 along x and along y (NaN nodes left out), node (0, 0) the block at the
   // region's smallest x and y; the last fewer than k columns and rows of the region
   // are left out. k = 1 views the map's heights in place, without a copy, so the map
   // must outlive the surface. Throws InputError(where, ...) when k leaves fewer than
@@ -53,6 +55,8 @@ class SurfaceGrid {
   std::pair<double, double> heightRange() const;
 
  private:
+  void smoothBinomial();
+
   int64_t nx_ = 0, ny_ = 0, stride_ = 0;
   double x0_ = 0, y0_ = 0, step_ = 1;
   int k_ = 1;

@@ -7,7 +7,8 @@
 // The surface is the bilinear surface through the cell centres (tools/render/
 // height_surface.h), traced from the level of block means whose nodes are about a pixel
 // apart where the picture is finest (k x k cells a node, k = floor(pixel footprint /
-// spacing), at least 1), at a fixed 2 x 2 grid of samples a pixel: marks finer than a
+// spacing), at least 1, smoothed by [1 2 1] / 4), at a fixed 2 x 2 grid of samples a
+// pixel: marks finer than a
 // pixel are averaged, not aliased into moiré, and a map of 4e8 cells is traced from a
 // few million nodes.
 #pragma once
