@@ -24,7 +24,7 @@ std::vector<ColourBarTick> colourBarTicks(double zLow, double zHigh, int barPx, 
   std::vector<ColourBarTick> ticks = {
       {zHigh, png::formatValue(zHigh * unitPerMm, decimals + 1, unit)},
       {zLow, png::formatValue(zLow * unitPerMm, decimals + 1, unit)}};
-  const double minGapMm = (textPx + 4) * range / std::max(1, barPx - 1);
+  const double minGapMm = 2 * textPx * range / std::max(1, barPx - 1);
   step /= unitPerMm;
   for (double v = std::ceil(zLow / step) * step; v < zHigh; v += step) {
     bool fits = true;

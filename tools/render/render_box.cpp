@@ -95,6 +95,15 @@ void drawEdgeTicks(const Painter& paint, const Vec3& from, const Vec3& to, const
                       int(std::lround(e[1] + uy * reach - 0.5 * textH)), label, scale, png::kInk);
   }
   const int w = png::textWidth(axisName, scale);
+  if (std::abs(ux) > std::abs(uy)) {
+    // Labels beside a steep edge: the name above the edge's upper end, over its labels.
+    const Vec3 top = a[1] < b[1] ? from : to;
+    const auto e = paint.screen(top + outward * tickMm);
+    const double x = e[0] + ux * 0.5 * labelReach;
+    paint.canvas.text(int(std::lround(x - 0.5 * w)), int(std::lround(e[1] - 2.5 * textH)), axisName,
+                      scale, png::kInk);
+    return;
+  }
   const double reach = labelReach + 6 * scale + 0.5 * (std::abs(ux) * w + std::abs(uy) * textH);
   const auto e = paint.screen(mid + outward * tickMm);
   paint.canvas.text(int(std::lround(e[0] + ux * reach - 0.5 * w)),
