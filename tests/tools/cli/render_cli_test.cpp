@@ -2,7 +2,7 @@
 // X3P, 16-bit TIFF and PNG, a folder of unmerged bands) gives a picture of --size; the
 // same bytes on 1 and 2 threads; and bad input (an unreadable file, a size of 0 or above
 // 16384, an elevation outside (0, 90], a region outside the map) is an input error
-// naming the option, with no PNG left behind.
+// naming the option, with no PNG left behind. `simulate --view` writes DIR/view.png.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -70,6 +70,21 @@ TEST_F(RenderCli, BandsUnmergedRenderLikeTheMergedMap) {
   // The merged GSF holds float32 heights, the bands float64: the same picture to a few
   // grey levels, not the same bytes.
   EXPECT_EQ(pngSize(path("bands.png")), pngSize(path("merged.png")));
+}
+
+TEST_F(RenderCli, SimulateViewWritesTheSamePicture) {
+  write("job.json", R"({"tool": {"type": "ball", "radius": 1},
+    "stock": {"min": [0, 0, -1], "max": [3, 2, 0]}, "grid": {"spacing": 0.02},
+    "path": {"raster": {"direction": "x", "step_over": 0.5, "depth": 0.1}}})");
+  const CliRun r = run("simulate " + path("job.json") + " -o " + path("out") + " --view");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(pngSize(path("out/view.png")), std::make_pair(1600, 1000));
+  EXPECT_NE(slurp(path("out/report.json")).find("\"view.png\""), std::string::npos);
+  // In bands the map is never whole: refused before computing, naming the option.
+  const CliRun tiled = run("simulate " + path("job.json") + " -o " + path("tiled") + " --view --tiled");
+  EXPECT_EQ(tiled.status, 1);
+  EXPECT_NE(tiled.err.find("--view"), std::string::npos) << tiled.err;
+  EXPECT_FALSE(fs::exists(path("tiled/view.png")));
 }
 
 TEST_F(RenderCli, SameBytesOnOneAndTwoThreads) {
