@@ -32,6 +32,7 @@ struct Ray {
 
 class Camera {
  public:
+  Camera() = default;
   // The camera that frames the points `corners` (world, mm: a box's eight corners) in a
   // `widthPx` x `heightPx` rectangle, centred, as large as fits. A perspective camera
   // looks at the box's middle from 2.5 times its circumscribed radius (a field of view
@@ -57,7 +58,7 @@ class Camera {
  private:
   std::array<double, 2> planeOf(const Vec3& p) const;  // (right, up) coordinates
 
-  Projection projection_;
+  Projection projection_ = Projection::kOrthographic;
   Vec3 forward_, right_, up_, centre_, eye_;
   double distance_ = 0;  // from the centre back to the eye (or the ortho origin plane)
   double scale_ = 1;     // px per plane unit
