@@ -28,8 +28,8 @@ int runRenderCommand(RenderArgs& args) {
   o.widthPx = args.size[0], o.heightPx = args.size[1];
   o.view = {args.view[0], args.view[1]};
   o.light = {args.light[0], args.light[1]};
-  o.projection = args.projection == "perspective" ? Projection::kPerspective
-                                                  : Projection::kOrthographic;
+  o.projection =
+      args.projection == "perspective" ? Projection::kPerspective : Projection::kOrthographic;
   o.colourMap = parseColourMap(args.colourMap, "--colormap");
   if (!args.titleGiven) o.title = args.request.heights;
   const RenderSummary s = runRender(args.request);
@@ -58,7 +58,8 @@ Command addRenderCommand(CLI::App& parent, CommonOptions& common) {
       "of k x k cells, k = the finest pixel footprint over the spacing, smoothed by\n"
       "[1 2 1]/4 along x and y (a prefiltered mip-map level), at a fixed 2 x 2 grid of\n"
       "samples a pixel, so marks finer than a pixel are averaged, not aliased into moire;\n"
-      "render a --region to see them. The same bytes whatever --threads. Angles in degrees: azimuth\n"
+      "render a --region to see them. The same bytes whatever --threads. Angles in degrees: "
+      "azimuth\n"
       "clockwise from north (+y), elevation above the horizon in (0, 90]; `--view 180 90\n"
       "--projection ortho` is the map seen from straight above, north up.");
   app->add_option("HEIGHTS", args->request.heights, "Height map file, or a folder of band files")

@@ -17,8 +17,9 @@ ZMap readHeights16(const std::string& path) {
   if (!in) throw InputError(path, "cannot read the image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.nchannels != 1 || spec.format != OIIO::TypeDesc::UINT16)
-    throw InputError(path, "expected a 16-bit single-channel height image written by scallop "
-                           "(`scallop export --to F.png|F.tif`)");
+    throw InputError(path,
+                     "expected a 16-bit single-channel height image written by scallop "
+                     "(`scallop export --to F.png|F.tif`)");
   const std::string description = spec.get_string_attribute("ImageDescription");
   double offset = 0, scale = 0, spacing = 0, cx = 0, cy = 0;
   long long nx = 0, ny = 0;
@@ -29,9 +30,10 @@ ZMap readHeights16(const std::string& path) {
                   &offset, &scale, &nx, &ny) != 4 ||
       std::sscanf(description.c_str() + grid,
                   " cells of %lf mm, first cell centre at (%lf, %lf) mm", &spacing, &cx, &cy) != 3)
-    throw InputError(path, "no scallop height description in ImageDescription (\"z_mm = "
-                           "z_offset_mm + z_scale_mm * value; ...\"): not a height image "
-                           "written by scallop");
+    throw InputError(path,
+                     "no scallop height description in ImageDescription (\"z_mm = "
+                     "z_offset_mm + z_scale_mm * value; ...\"): not a height image "
+                     "written by scallop");
   if (nx != spec.width || ny != spec.height || !(spacing > 0) || !std::isfinite(offset) ||
       !std::isfinite(scale) || !std::isfinite(cx) || !std::isfinite(cy))
     throw InputError(path, fmt::format("inconsistent description: {} x {} cells of {} mm in an "

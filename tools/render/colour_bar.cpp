@@ -49,8 +49,8 @@ void drawColourBar(png::Canvas& canvas, int x, int y, int barPx, double zLow, do
     canvas.fill(x, y + k, barW, 1, colourAt(map, range > 0 ? 1.0 - double(k) / (barPx - 1) : 0.5));
   canvas.frame(x, y, barW, barPx, png::kFrame);
   for (const ColourBarTick& t : colourBarTicks(zLow, zHigh, barPx, textH)) {
-    const int ty = range > 0 ? y + int(std::lround((zHigh - t.valueMm) / range * (barPx - 1)))
-                             : y + barPx / 2;
+    const int ty =
+        range > 0 ? y + int(std::lround((zHigh - t.valueMm) / range * (barPx - 1))) : y + barPx / 2;
     canvas.fill(x + barW, ty, 5, 1, png::kInk);
     canvas.text(x + barW + 5 + kLabelGap * scale, std::max(0, ty - textH / 2), t.label, scale,
                 png::kInk);

@@ -1,7 +1,6 @@
 #include "tools/render/deviation_view_png.h"
 
 #include <fmt/format.h>
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -73,19 +72,18 @@ DeviationViewImage renderDeviationView(const TriangleMesh& design,
   const int mapX = image.mapX, mapY = image.mapY;
 
   const int barH = std::max(mapH, 200), barX = mapX + mapW + 24;
-  const std::string angles =
-      fmt::format("view: azimuth {:g}\u00b0, elevation {:g}\u00b0{}; light {}, with shadows",
-                  view.azimuthDeg, view.elevationDeg,
-                  view.projection == Projection::kPerspective ? ", perspective" : "",
-                  std::isnan(view.light.azimuthDeg)
-                      ? std::string("above the viewer's right shoulder")
-                      : fmt::format("from {:g}\u00b0 (clockwise from +y) at {:g}\u00b0",
-                                    view.light.azimuthDeg, view.light.elevationDeg));
+  const std::string angles = fmt::format(
+      "view: azimuth {:g}\u00b0, elevation {:g}\u00b0{}; light {}, with shadows", view.azimuthDeg,
+      view.elevationDeg, view.projection == Projection::kPerspective ? ", perspective" : "",
+      std::isnan(view.light.azimuthDeg)
+          ? std::string("above the viewer's right shoulder")
+          : fmt::format("from {:g}\u00b0 (clockwise from +y) at {:g}\u00b0", view.light.azimuthDeg,
+                        view.light.elevationDeg));
   const std::string key = "red: below the design; blue: material left; grey: no value";
-  const int width = std::max({barX + png::divergingBarWidth(image.limitMm, kScale) + kPad,
-                              2 * kPad + png::textWidth(title, kScale),
-                              2 * kPad + png::textWidth(key, kScale),
-                              2 * kPad + png::textWidth(angles, kScale)});
+  const int width =
+      std::max({barX + png::divergingBarWidth(image.limitMm, kScale) + kPad,
+                2 * kPad + png::textWidth(title, kScale), 2 * kPad + png::textWidth(key, kScale),
+                2 * kPad + png::textWidth(angles, kScale)});
   const int keyY = mapY + barH + 14;
   image.canvas = png::Canvas(width, keyY + 2 * (textH + 6) + kPad);
   png::Canvas& canvas = image.canvas;

@@ -35,22 +35,24 @@ SurfaceGrid::SurfaceGrid(const ZMap& map, const CellRegion& region, int k, const
   // Block means, a row of nodes per task: each node sums its block in one fixed order.
   owned_.assign(size_t(nx_ * ny_), NAN);
   const int64_t kk = k_;
-  tbb::parallel_for(tbb::blocked_range<int64_t>(0, ny_), [&](const tbb::blocked_range<int64_t>& rows) {
-    std::vector<double> sum(static_cast<size_t>(nx_)), count(static_cast<size_t>(nx_));
-    for (int64_t b = rows.begin(); b < rows.end(); ++b) {
-      std::fill(sum.begin(), sum.end(), 0.0), std::fill(count.begin(), count.end(), 0.0);
-      for (int64_t jj = 0; jj < kk; ++jj) {
-        const double* row = map.heights().data() + (region.j0 + b * kk + jj) * g.nx + region.i0;
-        for (int64_t a = 0; a < nx_; ++a)
-          for (int64_t ii = 0; ii < kk; ++ii) {
-            const double z = row[a * kk + ii];
-            if (!std::isnan(z)) sum[size_t(a)] += z, count[size_t(a)] += 1;
+  tbb::parallel_for(
+      tbb::blocked_range<int64_t>(0, ny_), [&](const tbb::blocked_range<int64_t>& rows) {
+        std::vector<double> sum(static_cast<size_t>(nx_)), count(static_cast<size_t>(nx_));
+        for (int64_t b = rows.begin(); b < rows.end(); ++b) {
+          std::fill(sum.begin(), sum.end(), 0.0), std::fill(count.begin(), count.end(), 0.0);
+          for (int64_t jj = 0; jj < kk; ++jj) {
+            const double* row = map.heights().data() + (region.j0 + b * kk + jj) * g.nx + region.i0;
+            for (int64_t a = 0; a < nx_; ++a)
+              for (int64_t ii = 0; ii < kk; ++ii) {
+                const double z = row[a * kk + ii];
+                if (!std::isnan(z)) sum[size_t(a)] += z, count[size_t(a)] += 1;
+              }
           }
-      }
-      for (int64_t a = 0; a < nx_; ++a)
-        if (count[size_t(a)] > 0) owned_[size_t(b * nx_ + a)] = sum[size_t(a)] / count[size_t(a)];
-    }
-  });
+          for (int64_t a = 0; a < nx_; ++a)
+            if (count[size_t(a)] > 0)
+              owned_[size_t(b * nx_ + a)] = sum[size_t(a)] / count[size_t(a)];
+        }
+      });
   smoothBinomial();
   z_ = owned_.data();
   stride_ = nx_;
@@ -65,21 +67,23 @@ void SurfaceGrid::smoothBinomial() {
   std::vector<double> pass(owned_.size());
   auto smooth = [&](const std::vector<double>& in, std::vector<double>& out, int64_t along,
                     int64_t count, int64_t lines, int64_t lineStride) {
-    tbb::parallel_for(tbb::blocked_range<int64_t>(0, lines), [&](const tbb::blocked_range<int64_t>& r) {
-      for (int64_t l = r.begin(); l < r.end(); ++l)
-        for (int64_t k = 0; k < count; ++k) {
-          const size_t at = size_t(l * lineStride + k * along);
-          if (std::isnan(in[at])) {
-            out[at] = NAN;
-            continue;
-          }
-          double sum = 2 * in[at], weight = 2;
-          if (k > 0 && !std::isnan(in[at - size_t(along)])) sum += in[at - size_t(along)], weight += 1;
-          if (k + 1 < count && !std::isnan(in[at + size_t(along)]))
-            sum += in[at + size_t(along)], weight += 1;
-          out[at] = sum / weight;
-        }
-    });
+    tbb::parallel_for(tbb::blocked_range<int64_t>(0, lines),
+                      [&](const tbb::blocked_range<int64_t>& r) {
+                        for (int64_t l = r.begin(); l < r.end(); ++l)
+                          for (int64_t k = 0; k < count; ++k) {
+                            const size_t at = size_t(l * lineStride + k * along);
+                            if (std::isnan(in[at])) {
+                              out[at] = NAN;
+                              continue;
+                            }
+                            double sum = 2 * in[at], weight = 2;
+                            if (k > 0 && !std::isnan(in[at - size_t(along)]))
+                              sum += in[at - size_t(along)], weight += 1;
+                            if (k + 1 < count && !std::isnan(in[at + size_t(along)]))
+                              sum += in[at + size_t(along)], weight += 1;
+                            out[at] = sum / weight;
+                          }
+                      });
   };
   smooth(owned_, pass, 1, nx_, ny_, nx_);
   smooth(pass, owned_, nx_, ny_, nx_, 1);
@@ -94,7 +98,8 @@ std::pair<double, double> SurfaceGrid::heightRange() const {
         for (int64_t j = rows.begin(); j < rows.end(); ++j)
           for (int64_t i = 0; i < nx_; ++i) {
             const double z = height(i, j);
-            if (!std::isnan(z)) acc.first = std::min(acc.first, z), acc.second = std::max(acc.second, z);
+            if (!std::isnan(z))
+              acc.first = std::min(acc.first, z), acc.second = std::max(acc.second, z);
           }
         return acc;
       },
@@ -148,8 +153,10 @@ PatchHit firstHitInTile(const SurfaceGrid& s, int64_t i0, int64_t j0, int64_t i1
   // The patch the ray enters by, then a 2-D DDA over the patches in the ray's order.
   const double step = s.step();
   const double mid = t0 + 0.5 * std::min(t1 - t0, 1e-9 * step);
-  int64_t i = std::clamp<int64_t>(int64_t(std::floor((o.x + d.x * mid - s.nodeX(0)) / step)), i0, i1 - 1);
-  int64_t j = std::clamp<int64_t>(int64_t(std::floor((o.y + d.y * mid - s.nodeY(0)) / step)), j0, j1 - 1);
+  int64_t i =
+      std::clamp<int64_t>(int64_t(std::floor((o.x + d.x * mid - s.nodeX(0)) / step)), i0, i1 - 1);
+  int64_t j =
+      std::clamp<int64_t>(int64_t(std::floor((o.y + d.y * mid - s.nodeY(0)) / step)), j0, j1 - 1);
   const int stepI = d.x > 0 ? 1 : d.x < 0 ? -1 : 0, stepJ = d.y > 0 ? 1 : d.y < 0 ? -1 : 0;
   auto nextX = [&] { return stepI == 0 ? HUGE_VAL : (s.nodeX(i + (stepI > 0)) - o.x) / d.x; };
   auto nextY = [&] { return stepJ == 0 ? HUGE_VAL : (s.nodeY(j + (stepJ > 0)) - o.y) / d.y; };
@@ -162,7 +169,8 @@ PatchHit firstHitInTile(const SurfaceGrid& s, int64_t i0, int64_t j0, int64_t i1
     const double z00 = s.height(i, j), z10 = s.height(i + 1, j);
     const double z01 = s.height(i, j + 1), z11 = s.height(i + 1, j + 1);
     if (!std::isnan(z00 + z10 + z01 + z11)) {
-      const double w00 = s.worldZ(z00), w10 = s.worldZ(z10), w01 = s.worldZ(z01), w11 = s.worldZ(z11);
+      const double w00 = s.worldZ(z00), w10 = s.worldZ(z10), w01 = s.worldZ(z01),
+                   w11 = s.worldZ(z11);
       const double lo = std::min({w00, w10, w01, w11}), hi = std::max({w00, w10, w01, w11});
       const double za = o.z + d.z * ta, zb = o.z + d.z * tb;
       const double zTol = 1e-9 * (std::abs(lo) + std::abs(hi) + std::abs(za) + std::abs(zb));

@@ -37,10 +37,10 @@ class SurfaceGrid {
 
   int64_t nx() const { return nx_; }
   int64_t ny() const { return ny_; }
-  double step() const { return step_; }     // between nodes, mm
+  double step() const { return step_; }  // between nodes, mm
   double nodeX(int64_t i) const { return x0_ + double(i) * step_; }
   double nodeY(int64_t j) const { return y0_ + double(j) * step_; }
-  int blockCells() const { return k_; }     // k
+  int blockCells() const { return k_; }  // k
   // Height of node (i, j), mm.
   double height(int64_t i, int64_t j) const { return z_[j * stride_ + i]; }
 

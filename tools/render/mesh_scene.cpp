@@ -43,16 +43,15 @@ MeshScene::MeshScene(const TriangleMesh& mesh) : impl_(new Impl) {
   im.scene = rtcNewScene(im.device);
   rtcSetSceneFlags(im.scene, RTC_SCENE_FLAG_ROBUST);
   RTCGeometry geom = rtcNewGeometry(im.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                        RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                        mesh.vertices.size()));
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
   auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
                                                            RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
                                                            mesh.triangles.size()));
   if (!v || !f) throw InternalError("Embree: cannot allocate the mesh buffers: " + im.lastError);
   for (size_t k = 0; k < mesh.vertices.size(); ++k)
     v[3 * k] = float(mesh.vertices[k].x), v[3 * k + 1] = float(mesh.vertices[k].y),
-           v[3 * k + 2] = float(mesh.vertices[k].z);
+          v[3 * k + 2] = float(mesh.vertices[k].z);
   for (size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int c = 0; c < 3; ++c) f[3 * t + size_t(c)] = mesh.triangles[t][size_t(c)];
   rtcCommitGeometry(geom);

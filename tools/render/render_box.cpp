@@ -71,7 +71,8 @@ void drawEdgeTicks(const Painter& paint, const Vec3& from, const Vec3& to, const
   const double lengthPx = std::hypot(b[0] - a[0], b[1] - a[1]);
   const double lo = alongX ? from.x : from.y, hi = alongX ? to.x : to.y;
   int decimals = 0;
-  const int widest = png::textWidth(fmt::format("{:.2f}", std::max(std::abs(lo), std::abs(hi))), scale);
+  const int widest =
+      png::textWidth(fmt::format("{:.2f}", std::max(std::abs(lo), std::abs(hi))), scale);
   const int most = std::clamp(int(lengthPx / (widest + 2 * textH)), 2, 10);
   const std::vector<double> values = tickValues(lo, hi, most, decimals);
   const Vec3 mid = (from + to) * 0.5;

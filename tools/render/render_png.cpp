@@ -90,8 +90,8 @@ void checkRenderOptions(const RenderOptions& o, const RenderOptionNames& names) 
     if (!std::isfinite(d.azimuthDeg) || !std::isfinite(d.elevationDeg))
       throw InputError(name, "expected finite angles AZ EL in degrees");
     if (!(d.elevationDeg > 0 && d.elevationDeg <= 90))
-      throw InputError(name, fmt::format("expected an elevation in (0, 90] degrees, got {:g}",
-                                         d.elevationDeg));
+      throw InputError(
+          name, fmt::format("expected an elevation in (0, 90] degrees, got {:g}", d.elevationDeg));
   };
   direction(o.view, names.view);
   direction(o.light, names.light);
@@ -139,7 +139,8 @@ RenderedPicture renderPicture(const ZMap& map, const CellRegion& region,
   const int barPanel = colourBarWidth(zLow, zHigh, barPx, s) + 3 * pad;
   const int margin = 4 * textH + 14 * s;
   const int plotX = pad, plotY = pad + titleH;
-  const int plotW = std::max(1, W - barPanel - 2 * pad), plotH = std::max(1, H - plotY - notesH - pad);
+  const int plotW = std::max(1, W - barPanel - 2 * pad),
+            plotH = std::max(1, H - plotY - notesH - pad);
   const int camW = std::max(1, plotW - 2 * margin), camH = std::max(1, plotH - 2 * margin);
 
   // A first camera on the sampled range picks the level: nodes about a pixel apart
@@ -212,7 +213,8 @@ RenderedPicture renderPicture(const ZMap& map, const CellRegion& region,
              : fmt::format("surface: bilinear through means of {} \u00d7 {} cells ({:g} mm apart), "
                            "{} \u00d7 {} samples a pixel",
                            k, k, surface.step(), n, n)};
-  for (int l = 0; l < 2; ++l) canvas.text(pad, H - pad - notesH + l * lineH + 4 * s, notes[l], s, png::kInk);
+  for (int l = 0; l < 2; ++l)
+    canvas.text(pad, H - pad - notesH + l * lineH + 4 * s, notes[l], s, png::kInk);
   return out;
 }
 

@@ -34,15 +34,14 @@ struct RenderOptions {
   double exaggeration = NAN;
   Projection projection = Projection::kOrthographic;
   ColourMap colourMap = ColourMap::kViridis;
-  std::string title;        // drawn above the picture
-  double uncutHeight = NAN; // heights at or above it are grey, "uncut" (a simulation's stock top)
-  int samplesPerSide = 2;   // n x n samples a pixel
+  std::string title;         // drawn above the picture
+  double uncutHeight = NAN;  // heights at or above it are grey, "uncut" (a simulation's stock top)
+  int samplesPerSide = 2;    // n x n samples a pixel
 };
 
 // The option names bad values are reported under.
 struct RenderOptionNames {
-  std::string size = "--size", view = "--view", light = "--light",
-              exaggeration = "--exaggeration";
+  std::string size = "--size", view = "--view", light = "--light", exaggeration = "--exaggeration";
 };
 
 // Throws InputError naming the option: a size outside [1, 16384] px, an angle not
@@ -52,10 +51,10 @@ void checkRenderOptions(const RenderOptions& options, const RenderOptionNames& n
 struct RenderSummary {
   double exaggeration = 1;
   bool automaticExaggeration = false;
-  int blockCells = 1;         // k: the level's nodes are means of k x k cells
+  int blockCells = 1;  // k: the level's nodes are means of k x k cells
   int64_t nodesX = 0, nodesY = 0;
-  size_t tiles = 0;           // Embree primitives
-  double zLow = 0, zHigh = 0; // colour range, mm
+  size_t tiles = 0;            // Embree primitives
+  double zLow = 0, zHigh = 0;  // colour range, mm
 };
 
 struct RenderedPicture {

@@ -45,8 +45,10 @@ bool SurfaceRenderer::wallHit(const Ray& ray, double tMax, double& tOut, Vec3& n
   for (int side = 0; side < 4; ++side) {
     const bool alongX = side < 2;
     const int64_t fixed = side == 0 ? 0 : side == 1 ? s.ny() - 1 : side == 2 ? 0 : s.nx() - 1;
-    const Vec3 n = side == 0 ? Vec3(0, -1, 0) : side == 1 ? Vec3(0, 1, 0)
-                 : side == 2 ? Vec3(-1, 0, 0) : Vec3(1, 0, 0);
+    const Vec3 n = side == 0   ? Vec3(0, -1, 0)
+                   : side == 1 ? Vec3(0, 1, 0)
+                   : side == 2 ? Vec3(-1, 0, 0)
+                               : Vec3(1, 0, 0);
     if (dot(d, n) >= 0) continue;  // seen from inside: behind the surface
     const double plane = alongX ? s.nodeY(fixed) : s.nodeX(fixed);
     const double t = (plane - (alongX ? o.y : o.x)) / (alongX ? d.y : d.x);
@@ -119,7 +121,8 @@ TracedImage SurfaceRenderer::trace(int widthPx, int heightPx) const {
             if (s.what != SurfaceSample::What::kNothing) depth = std::min(depth, float(s.t));
           }
         const size_t at = size_t(r) * size_t(widthPx) + size_t(c);
-        for (int k = 0; k < 3; ++k) image.rgb[at * 3 + size_t(k)] = uint8_t((sum[k] + n * n / 2) / (n * n));
+        for (int k = 0; k < 3; ++k)
+          image.rgb[at * 3 + size_t(k)] = uint8_t((sum[k] + n * n / 2) / (n * n));
         image.depth[at] = depth;
       }
   });

@@ -43,12 +43,12 @@ struct SurfaceLook {
 // One sample: what the ray met and how it is drawn.
 struct SurfaceSample {
   enum class What { kNothing, kSurface, kWall } what = What::kNothing;
-  double t = HUGE_VAL;     // along the ray
-  Vec3 point;              // world
-  double heightMm = NAN;   // of the surface hit (kSurface)
-  Vec3 normal;             // world, unit, towards the camera
-  bool lit = false;        // the shadow ray reached the light
-  double factor = 0;       // shading factor
+  double t = HUGE_VAL;    // along the ray
+  Vec3 point;             // world
+  double heightMm = NAN;  // of the surface hit (kSurface)
+  Vec3 normal;            // world, unit, towards the camera
+  bool lit = false;       // the shadow ray reached the light
+  double factor = 0;      // shading factor
   png::Rgb colour{255, 255, 255};
 };
 

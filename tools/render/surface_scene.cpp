@@ -120,24 +120,26 @@ SurfaceScene::SurfaceScene(const SurfaceGrid& surface) : surface_(surface), impl
   // then the tiles with any such patch, in index order.
   const int64_t tiles = im.tilesX * im.tilesY;
   std::vector<float> lo(size_t(tiles), HUGE_VALF), hi(size_t(tiles), -HUGE_VALF);
-  tbb::parallel_for(tbb::blocked_range<int64_t>(0, tiles), [&](const tbb::blocked_range<int64_t>& r) {
-    for (int64_t t = r.begin(); t < r.end(); ++t) {
-      const int64_t i0 = (t % im.tilesX) * n, j0 = (t / im.tilesX) * n;
-      const int64_t i1 = std::min(i0 + n, surface.nx() - 1), j1 = std::min(j0 + n, surface.ny() - 1);
-      double a = HUGE_VAL, b = -HUGE_VAL;
-      for (int64_t j = j0; j < j1; ++j)
-        for (int64_t i = i0; i < i1; ++i) {
-          const double z00 = surface.height(i, j), z10 = surface.height(i + 1, j);
-          const double z01 = surface.height(i, j + 1), z11 = surface.height(i + 1, j + 1);
-          if (std::isnan(z00 + z10 + z01 + z11)) continue;
-          for (double z : {z00, z10, z01, z11}) {
-            const double w = surface.worldZ(z);
-            a = std::min(a, w), b = std::max(b, w);
-          }
+  tbb::parallel_for(
+      tbb::blocked_range<int64_t>(0, tiles), [&](const tbb::blocked_range<int64_t>& r) {
+        for (int64_t t = r.begin(); t < r.end(); ++t) {
+          const int64_t i0 = (t % im.tilesX) * n, j0 = (t / im.tilesX) * n;
+          const int64_t i1 = std::min(i0 + n, surface.nx() - 1),
+                        j1 = std::min(j0 + n, surface.ny() - 1);
+          double a = HUGE_VAL, b = -HUGE_VAL;
+          for (int64_t j = j0; j < j1; ++j)
+            for (int64_t i = i0; i < i1; ++i) {
+              const double z00 = surface.height(i, j), z10 = surface.height(i + 1, j);
+              const double z01 = surface.height(i, j + 1), z11 = surface.height(i + 1, j + 1);
+              if (std::isnan(z00 + z10 + z01 + z11)) continue;
+              for (double z : {z00, z10, z01, z11}) {
+                const double w = surface.worldZ(z);
+                a = std::min(a, w), b = std::max(b, w);
+              }
+            }
+          if (a <= b) lo[size_t(t)] = floatBelow(a), hi[size_t(t)] = floatAbove(b);
         }
-      if (a <= b) lo[size_t(t)] = floatBelow(a), hi[size_t(t)] = floatAbove(b);
-    }
-  });
+      });
   double extent = std::max({std::abs(surface.nodeX(0)), std::abs(surface.nodeX(surface.nx() - 1)),
                             std::abs(surface.nodeY(0)), std::abs(surface.nodeY(surface.ny() - 1))});
   for (int64_t t = 0; t < tiles; ++t)

@@ -27,8 +27,9 @@ namespace {
 ZMap readBands(const std::string& dir) {
   const std::string first = bandDescriptionPath(dir, 0);
   if (!fs::exists(first))
-    throw InputError(dir, "a folder without band-0.json: expected the band files of `scallop "
-                          "simulate --bands` (or give a height file)");
+    throw InputError(dir,
+                     "a folder without band-0.json: expected the band files of `scallop "
+                     "simulate --bands` (or give a height file)");
   const json reference = readBandDescription(first, 0);
   GridSpec grid;
   int64_t bands = 0, bandRows = 0;
@@ -39,8 +40,7 @@ ZMap readBands(const std::string& dir) {
   } catch (const json::exception& e) {
     throw InputError(first, std::string("damaged band description: ") + e.what());
   }
-  if (bands < 1 || bandRows < 1)
-    throw InputError(first, "damaged band description: no bands");
+  if (bands < 1 || bandRows < 1) throw InputError(first, "damaged band description: no bands");
   ZMap map(grid, NAN);
   for (int64_t b = 0; b < bands; ++b) {
     const std::string path = bandDescriptionPath(dir, b);
@@ -70,8 +70,9 @@ ZMap readAnyHeightMap(const std::string& path) {
   if (ext == ".x3p") return readHeightsX3p(path);
   if (ext == ".png" || ext == ".tif" || ext == ".tiff") return readHeights16(path);
   if (ext == ".gsf" || ext == ".exr") return readHeightFile(path);
-  throw InputError(path, "expected a height map: .gsf, .exr, .x3p, a 16-bit .png/.tif/.tiff "
-                         "written by scallop export, or a folder of band files");
+  throw InputError(path,
+                   "expected a height map: .gsf, .exr, .x3p, a 16-bit .png/.tif/.tiff "
+                   "written by scallop export, or a folder of band files");
 }
 
 RenderSummary runRender(const RenderRequest& request) {

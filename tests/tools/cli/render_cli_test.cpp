@@ -61,12 +61,15 @@ TEST_F(RenderCli, BandsUnmergedRenderLikeTheMergedMap) {
     "path": {"raster": {"direction": "x", "step_over": 0.5, "depth": 0.1}}})";
   write("job.json", job);
   const std::string dir = path("bands");
-  ASSERT_EQ(run("simulate " + path("job.json") + " -o " + dir + " --tile-rows 32 --bands 0:4").status, 0);
+  ASSERT_EQ(
+      run("simulate " + path("job.json") + " -o " + dir + " --tile-rows 32 --bands 0:4").status, 0);
   const CliRun r = run("render " + dir + " -o " + path("bands.png") + " --size 300 200");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(run("merge " + dir).status, 0);
   ASSERT_EQ(run("render " + dir + "/heights.gsf -o " + path("merged.png") +
-                " --size 300 200 --title " + dir).status, 0);
+                " --size 300 200 --title " + dir)
+                .status,
+            0);
   // The merged GSF holds float32 heights, the bands float64: the same picture to a few
   // grey levels, not the same bytes.
   EXPECT_EQ(pngSize(path("bands.png")), pngSize(path("merged.png")));
@@ -81,7 +84,8 @@ TEST_F(RenderCli, SimulateViewWritesTheSamePicture) {
   EXPECT_EQ(pngSize(path("out/view.png")), std::make_pair(1600, 1000));
   EXPECT_NE(slurp(path("out/report.json")).find("\"view.png\""), std::string::npos);
   // In bands the map is never whole: refused before computing, naming the option.
-  const CliRun tiled = run("simulate " + path("job.json") + " -o " + path("tiled") + " --view --tiled");
+  const CliRun tiled =
+      run("simulate " + path("job.json") + " -o " + path("tiled") + " --view --tiled");
   EXPECT_EQ(tiled.status, 1);
   EXPECT_NE(tiled.err.find("--view"), std::string::npos) << tiled.err;
   EXPECT_FALSE(fs::exists(path("tiled/view.png")));
@@ -89,8 +93,10 @@ TEST_F(RenderCli, SimulateViewWritesTheSamePicture) {
 
 TEST_F(RenderCli, SameBytesOnOneAndTwoThreads) {
   const std::string gsf = writeMap();
-  ASSERT_EQ(run("render " + gsf + " -o " + path("one.png") + " --threads 1 --size 400 300").status, 0);
-  ASSERT_EQ(run("render " + gsf + " -o " + path("two.png") + " --threads 2 --size 400 300").status, 0);
+  ASSERT_EQ(run("render " + gsf + " -o " + path("one.png") + " --threads 1 --size 400 300").status,
+            0);
+  ASSERT_EQ(run("render " + gsf + " -o " + path("two.png") + " --threads 2 --size 400 300").status,
+            0);
   const std::string one = slurp(path("one.png")), two = slurp(path("two.png"));
   EXPECT_FALSE(one.empty());
   EXPECT_TRUE(one == two);
@@ -105,7 +111,10 @@ TEST_F(BadInputMatrix, Render) {
   fs::remove(dir_ / "h.gsf");
   const std::string ok = "render @/h.gsf -o @/out.png";
   std::vector<BadInputRow> rows = {
-      {"unreadable file", {{"bad.gsf", "not a GSF"}}, "render @/bad.gsf -o @/out.png", 1,
+      {"unreadable file",
+       {{"bad.gsf", "not a GSF"}},
+       "render @/bad.gsf -o @/out.png",
+       1,
        {"@/bad.gsf"}},
       {"missing file", {}, "render @/none.gsf -o @/out.png", 1, {"@/none.gsf"}},
       {"size 0", {}, ok + " --size 0 100", 1, {"--size"}},

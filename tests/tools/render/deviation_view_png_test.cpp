@@ -113,7 +113,8 @@ TEST(DeviationView, SameBitsOnOneAndTwoThreads) {
   std::vector<uint8_t> bytes[2];
   for (int threads : {1, 2}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    const DeviationViewImage image = renderDeviationView(s.mesh, s.deviation, DeviationView(), "t", 300);
+    const DeviationViewImage image =
+        renderDeviationView(s.mesh, s.deviation, DeviationView(), "t", 300);
     const png::Canvas& c = image.canvas;
     bytes[threads - 1].assign(c.data(), c.data() + size_t(c.width()) * size_t(c.height()) * 3);
   }

@@ -8,6 +8,8 @@
 // Embree's tiles is the first sign change of the ray's height over the surface found by
 // fine marching; marks finer than a pixel average out instead of aliasing; and the
 // picture is the same bytes on 1 and 2 threads.
+#include "tools/render/surface_render.h"
+
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -21,7 +23,6 @@
 #include "tests/support/sampled_field.h"
 #include "tools/render/height_colours.h"
 #include "tools/render/render_png.h"
-#include "tools/render/surface_render.h"
 
 namespace scallop {
 namespace {
@@ -63,9 +64,8 @@ constexpr Direction kAbove{180, 90};
 TEST(SurfaceRender, BlockCastsItsHeightLongShadowEastUnderWestLight) {
   // Floor z = 0 and a block 0.1 mm high over x in [0.2, 0.3] mm, on 0.002 mm cells.
   const double s = 0.002, height = 0.1;
-  const ZMap map = sampledField(0, 0, 300, 60, s, [&](double x, double) {
-    return x >= 0.2 && x <= 0.3 ? height : 0.0;
-  });
+  const ZMap map = sampledField(
+      0, 0, 300, 60, s, [&](double x, double) { return x >= 0.2 && x <= 0.3 ? height : 0.0; });
   const Rig rig(map, 1, kAbove, {270, 45}, 1200, 240);
   // The block's top edge: its last node on the east, its first on the west.
   double east = 0, west = 1;
@@ -98,16 +98,17 @@ TEST(SurfaceRender, BlockCastsItsHeightLongShadowEastUnderWestLight) {
 
 TEST(SurfaceRender, TiltedPlaneShadeIsLambertsLaw) {
   const double a = 0.3, b = -0.2, e = 2.5;
-  const ZMap map = sampledField(0, 0, 80, 60, 0.01, [&](double x, double y) { return a * x + b * y; });
+  const ZMap map =
+      sampledField(0, 0, 80, 60, 0.01, [&](double x, double y) { return a * x + b * y; });
   const Vec3 n = normalize(Vec3(-e * a, -e * b, 1));
-  for (const Direction light : {Direction{100, 30}, Direction{315, 45}, Direction{200, 70},
-                                Direction{90, 10}}) {
+  for (const Direction light :
+       {Direction{100, 30}, Direction{315, 45}, Direction{200, 70}, Direction{90, 10}}) {
     const Rig rig(map, e, kAbove, light, 400, 300);
     const SurfaceSample sm = rig.at(0.41, 0.27);
     ASSERT_EQ(sm.what, SurfaceSample::What::kSurface);
     const double nl = dot(n, towards(light));
-    const double expected =
-        kRenderAmbient + (1 - kRenderAmbient) * std::max(0.0, nl) / std::sin(light.elevationDeg * kRadPerDeg);
+    const double expected = kRenderAmbient + (1 - kRenderAmbient) * std::max(0.0, nl) /
+                                                 std::sin(light.elevationDeg * kRadPerDeg);
     EXPECT_NEAR(sm.factor, expected, 1e-12) << light.azimuthDeg << " " << light.elevationDeg;
     EXPECT_EQ(sm.lit, nl > 0);
     EXPECT_NEAR(sm.normal.x, n.x, 1e-12);
@@ -145,8 +146,8 @@ TEST(SurfaceRender, PixelColourIsTheColourMapAtTheHeightHit) {
                        map.at(i, j + 1) * (1 - u) * v + map.at(i + 1, j + 1) * u * v;
       EXPECT_NEAR(sm.heightMm, h, 1e-9);
       EXPECT_NEAR(sm.point.z, e * h, 1e-9);  // the hit is on the surface
-      const png::Rgb want = shaded(viridis((h - look.zLow) / (look.zHigh - look.zLow)), sm.factor,
-                                   maxFactor);
+      const png::Rgb want =
+          shaded(viridis((h - look.zLow) / (look.zHigh - look.zLow)), sm.factor, maxFactor);
       const uint8_t* p = &image.rgb[(size_t(r) * 160 + size_t(c)) * 3];
       EXPECT_EQ(p[0], want.r);
       EXPECT_EQ(p[1], want.g);
