@@ -137,10 +137,11 @@ RenderedPicture renderPicture(const ZMap& map, const CellRegion& region,
   const int notesH = 2 * lineH;
   const int barPx = std::max(1, int(0.6 * (H - titleH - notesH - 2 * pad)));
   const int barPanel = colourBarWidth(zLow, zHigh, barPx, s) + 3 * pad;
-  const int margin = 4 * textH + 14 * s;
   const int plotX = pad, plotY = pad + titleH;
   const int plotW = std::max(1, W - barPanel - 2 * pad),
             plotH = std::max(1, H - plotY - notesH - pad);
+  // The box's labels need about four text heights; a small picture gives them less.
+  const int margin = std::min({4 * textH + 14 * s, plotW / 6, plotH / 6});
   const int camW = std::max(1, plotW - 2 * margin), camH = std::max(1, plotH - 2 * margin);
 
   // A first camera on the sampled range picks the level: nodes about a pixel apart
