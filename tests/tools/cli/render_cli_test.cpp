@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,14 @@ class RenderCli : public CliFixture {
     const std::string file = path(name);
     writeHeightsGsf(m, file, "test map");
     return file;
+  }
+  static std::vector<uint8_t> pixels(const std::string& file) {
+    auto in = OIIO::ImageInput::open(file);
+    if (!in) return {};
+    std::vector<uint8_t> rgb(size_t(in->spec().width) * size_t(in->spec().height) * 3);
+    if (in->spec().nchannels != 3 || !in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, rgb.data()))
+      return {};
+    return rgb;
   }
   static std::pair<int, int> pngSize(const std::string& file) {
     auto in = OIIO::ImageInput::open(file);
@@ -70,9 +79,14 @@ TEST_F(RenderCli, BandsUnmergedRenderLikeTheMergedMap) {
                 " --size 300 200 --title " + dir)
                 .status,
             0);
-  // The merged GSF holds float32 heights, the bands float64: the same picture to a few
-  // grey levels, not the same bytes.
-  EXPECT_EQ(pngSize(path("bands.png")), pngSize(path("merged.png")));
+  // The merged GSF holds float32 heights, the bands float64: the same picture but for
+  // a few pixels where a rounded height tips a colour or a shadow's edge.
+  const std::vector<uint8_t> a = pixels(path("bands.png")), b = pixels(path("merged.png"));
+  ASSERT_EQ(a.size(), size_t(300 * 200 * 3));
+  ASSERT_EQ(a.size(), b.size());
+  size_t differ = 0;
+  for (size_t k = 0; k < a.size(); ++k) differ += std::abs(int(a[k]) - int(b[k])) > 2;
+  EXPECT_LT(differ, a.size() / 200);
 }
 
 TEST_F(RenderCli, SimulateViewWritesTheSamePicture) {
