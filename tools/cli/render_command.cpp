@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "tools/cli/command.h"
+#include "tools/cli/interrupt.h"
+#include "tools/cli/progress.h"
 #include "tools/run/render_run.h"
 #include "tools/run/stopwatch.h"
 
@@ -32,7 +34,13 @@ int runRenderCommand(RenderArgs& args) {
       args.projection == "perspective" ? Projection::kPerspective : Projection::kOrthographic;
   o.colourMap = parseColourMap(args.colourMap, "--colormap");
   if (!args.titleGiven) o.title = args.request.heights;
+  ProgressBar bar("rendering");
+  o.progress = [&bar](int64_t done, int64_t total) {
+    bar.update(done, total);
+    throwIfInterrupted();  // Ctrl-C: stop tracing, write nothing
+  };
   const RenderSummary s = runRender(args.request);
+  bar.finish();
   std::fprintf(stderr,
                "scallop: wrote %s (%d x %d px; heights x %g%s; surface from %lld x %lld nodes, "
                "means of %d x %d cells; %.2f s)\n",

@@ -176,7 +176,8 @@ RenderedPicture renderPicture(const ZMap& map, const CellRegion& region,
   look.uncutHeight = options.uncutHeight;
   look.baseZ = baseZ;
   look.samplesPerSide = options.samplesPerSide;
-  const TracedImage traced = SurfaceRenderer(scene, camera, look).trace(camW, camH);
+  const TracedImage traced =
+      SurfaceRenderer(scene, camera, look).trace(camW, camH, options.progress);
 
   // The picture around it.
   png::Canvas& canvas = out.canvas = png::Canvas(W, H);

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "analysis/surface_metrology.h"
@@ -37,6 +38,9 @@ struct RenderOptions {
   std::string title;         // drawn above the picture
   double uncutHeight = NAN;  // heights at or above it are grey, "uncut" (a simulation's stock top)
   int samplesPerSide = 2;    // n x n samples a pixel
+  // Called as rows of the picture are traced (rows done, rows in all), one call at a
+  // time; it may throw to cancel (nothing is written then).
+  std::function<void(int64_t, int64_t)> progress;
 };
 
 // The option names bad values are reported under.

@@ -5,7 +5,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 #include "base/constants.h"
 #include "tools/render/height_colours.h"
@@ -102,7 +104,10 @@ SurfaceSample SurfaceRenderer::sample(double px, double py) const {
   return s;
 }
 
-TracedImage SurfaceRenderer::trace(int widthPx, int heightPx) const {
+TracedImage SurfaceRenderer::trace(int widthPx, int heightPx,
+                                   const std::function<void(int64_t, int64_t)>& progress) const {
+  std::atomic<int64_t> rowsDone{0};
+  std::mutex reporting;
   TracedImage image;
   image.width = widthPx, image.height = heightPx;
   image.rgb.assign(size_t(widthPx) * size_t(heightPx) * 3, 255);
@@ -125,6 +130,11 @@ TracedImage SurfaceRenderer::trace(int widthPx, int heightPx) const {
           image.rgb[at * 3 + size_t(k)] = uint8_t((sum[k] + n * n / 2) / (n * n));
         image.depth[at] = depth;
       }
+    if (progress) {
+      const int64_t done = rowsDone += rows.size();
+      std::lock_guard<std::mutex> one(reporting);
+      progress(done, heightPx);
+    }
   });
   return image;
 }

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "tools/render/colour_map.h"
@@ -66,8 +67,11 @@ class SurfaceRenderer {
 
   // The sample at (px, py) of the plot area (pixels, as Camera::rayThrough takes them).
   SurfaceSample sample(double px, double py) const;
-  // Every pixel of a widthPx x heightPx plot area, rows in parallel.
-  TracedImage trace(int widthPx, int heightPx) const;
+  // Every pixel of a widthPx x heightPx plot area, rows in parallel. `progress`, if
+  // given, is called with the rows done and in all, one call at a time; it may throw to
+  // cancel the trace (the exception reaches the caller).
+  TracedImage trace(int widthPx, int heightPx,
+                    const std::function<void(int64_t, int64_t)>& progress = nullptr) const;
 
  private:
   // The nearest wall hit before `tMax`, if any, with its outward normal.
