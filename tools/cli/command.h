@@ -40,5 +40,6 @@ Command addStatsCommand(CLI::App& parent, CommonOptions& common);
 Command addExportCommand(CLI::App& parent, CommonOptions& common);
 Command addCollectCommand(CLI::App& parent, CommonOptions& common);
 Command addCutterCommand(CLI::App& parent, CommonOptions& common);
+Command addRenderCommand(CLI::App& parent, CommonOptions& common);
 
 }  // namespace scallop

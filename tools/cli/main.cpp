@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
   commands.push_back(scallop::addMergeCommand(app, common));
   commands.push_back(scallop::addStatsCommand(app, common));
   commands.push_back(scallop::addExportCommand(app, common));
+  commands.push_back(scallop::addRenderCommand(app, common));
   commands.push_back(scallop::addCollectCommand(app, common));
   commands.push_back(scallop::addCutterCommand(app, common));
 

@@ -73,9 +73,11 @@ void printOutcome(const RunOutcome& outcome, const std::string& outDir) {
   printFeedMarks(d);
   namespace fs = std::filesystem;
   const fs::path dir(outDir);
-  std::printf("wrote %s\n      %s\n      %s\n      %s\n", (dir / "heights.exr").c_str(),
-              (dir / "heights.gsf").c_str(), (dir / "preview.png").c_str(),
-              (dir / "report.json").c_str());
+  std::printf("wrote %s\n      %s\n      %s\n", (dir / "heights.exr").c_str(),
+              (dir / "heights.gsf").c_str(), (dir / "preview.png").c_str());
+  for (const auto& name : d["outputs"])
+    if (name == "view.png") std::printf("      %s\n", (dir / "view.png").c_str());
+  std::printf("      %s\n", (dir / "report.json").c_str());
 }
 
 Job loadSimulateJob(const SimulateArgs& args) {
@@ -205,6 +207,9 @@ Command addSimulateCommand(CLI::App& parent, CommonOptions& common) {
                 "one line 'bands=B band_rows=R rows=NY columns=NX exr_tile_rows=T' (with\n"
                 "--json, a JSON object); --bands K:M then takes 0 <= K < M <= B")
       ->excludes(bands);
+  app->add_flag("--view", args->run.view,
+                "Also write DIR/view.png: the map ray-traced in 3-D in oblique light with\n"
+                "shadows, as `scallop render` draws it with its defaults (whole map in memory)");
   app->add_flag("--print-default-job", *printDefault,
                 "Print the built-in default job file and exit");
   return {app, [args, printDefault, printBandLayout, &common]() {

@@ -341,7 +341,10 @@ Job parseJob(const std::string& textIn, const std::string& source,
       }
       if (design.contains("view")) {
         const json& view = requireObject(design, "view", "design.view");
-        rejectUnknownKeys(view, {"azimuth_deg", "elevation_deg"}, "design.view");
+        rejectUnknownKeys(view,
+                          {"azimuth_deg", "elevation_deg", "light_azimuth_deg",
+                           "light_elevation_deg", "projection"},
+                          "design.view");
         job.viewAzimuthDeg =
             number(view, "azimuth_deg", "design.view.azimuth_deg", &job.viewAzimuthDeg);
         job.viewElevationDeg =
@@ -350,6 +353,29 @@ Job parseJob(const std::string& textIn, const std::string& source,
           throw InputError("design.view.azimuth_deg", "must be within [-360, 360] degrees");
         if (!(std::fabs(job.viewElevationDeg) <= 90))
           throw InputError("design.view.elevation_deg", "must be within [-90, 90] degrees");
+        // The light as `scallop render`'s: azimuth clockwise from +y, elevation above
+        // the horizon; both or neither.
+        if (view.contains("light_azimuth_deg") != view.contains("light_elevation_deg"))
+          throw InputError("design.view",
+                           "give light_azimuth_deg and light_elevation_deg "
+                           "together (or neither: the light at the viewer's "
+                           "shoulder)");
+        if (view.contains("light_azimuth_deg")) {
+          job.viewLightAzimuthDeg =
+              number(view, "light_azimuth_deg", "design.view.light_azimuth_deg", nullptr);
+          job.viewLightElevationDeg =
+              number(view, "light_elevation_deg", "design.view.light_elevation_deg", nullptr);
+          if (!(std::fabs(job.viewLightAzimuthDeg) <= 360))
+            throw InputError("design.view.light_azimuth_deg", "must be within [-360, 360] degrees");
+          if (!(job.viewLightElevationDeg > 0 && job.viewLightElevationDeg <= 90))
+            throw InputError("design.view.light_elevation_deg", "must be within (0, 90] degrees");
+        }
+        if (view.contains("projection")) {
+          const json& p = view["projection"];
+          if (!p.is_string() || (p != "ortho" && p != "perspective"))
+            throw InputError("design.view.projection", "expected \"ortho\" or \"perspective\"");
+          job.viewPerspective = p == "perspective";
+        }
         if (!job.normalDeviation)
           throw InputError("design.view", "goes with \"normal_deviation\": true");
       }
@@ -477,9 +503,14 @@ json jobToJson(const Job& job) {
     if (job.normalDeviation)
       out["design"].update({{"normal_deviation", true}, {"gouge_depth", job.gougeDepth}});
     if (!std::isnan(job.scallopLimit)) out["design"]["scallop_limit"] = job.scallopLimit;
-    if (job.normalDeviation)
+    if (job.normalDeviation) {
       out["design"]["view"] = {{"azimuth_deg", job.viewAzimuthDeg},
                                {"elevation_deg", job.viewElevationDeg}};
+      if (!std::isnan(job.viewLightAzimuthDeg))
+        out["design"]["view"].update({{"light_azimuth_deg", job.viewLightAzimuthDeg},
+                                      {"light_elevation_deg", job.viewLightElevationDeg}});
+      if (job.viewPerspective) out["design"]["view"]["projection"] = "perspective";
+    }
   }
   json offsets = json::object();
   for (int k = 0; k < 6; ++k) {

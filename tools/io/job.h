@@ -87,6 +87,10 @@ struct Job {
   double scallopLimit = NAN;  // mm: design.scallop_limit (NaN: none)
   // design.view: the angles deviation_view.png is drawn from (tools/render/deviation_view_png.h).
   double viewAzimuthDeg = 30, viewElevationDeg = 35;
+  // design.view.light_azimuth_deg / light_elevation_deg (NaN: the light above the
+  // viewer's right shoulder) and design.view.projection ("perspective": true).
+  double viewLightAzimuthDeg = NAN, viewLightElevationDeg = NAN;
+  bool viewPerspective = false;
 
   GridSpec grid() const;
   // The stock's highest point on the map's lines: stock.max.z, or in a frame the box's

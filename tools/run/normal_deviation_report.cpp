@@ -112,6 +112,8 @@ nlohmann::json normalDeviationReport(const Job& job, const std::string& outDir, 
     r["mesh"] = "deviation.ply";
     DeviationView view;
     view.azimuthDeg = job.viewAzimuthDeg, view.elevationDeg = job.viewElevationDeg;
+    view.light = {job.viewLightAzimuthDeg, job.viewLightElevationDeg};
+    if (job.viewPerspective) view.projection = Projection::kPerspective;
     writeDeviationViewPng(
         *job.design, d.deviation, view,
         (std::filesystem::path(outDir) / "deviation_view.png").string(),

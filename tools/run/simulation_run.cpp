@@ -14,6 +14,7 @@
 #include "tools/io/height_images.h"
 #include "tools/io/job.h"
 #include "tools/render/preview_png.h"
+#include "tools/render/render_png.h"
 #include "tools/run/feed_mark_report.h"
 #include "tools/run/memory_limits.h"
 #include "tools/run/normal_deviation_report.h"
@@ -126,6 +127,12 @@ json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& 
   preview.title = previewTitle(title);
   preview.uncutHeight = job.stockTop();  // the map's initial height (raycast/simulation.h)
   writePreviewPng(map, (dir / "preview.png").string(), preview);
+  if (settings.view) {
+    RenderOptions view;
+    view.title = preview.title;
+    view.uncutHeight = preview.uncutHeight;
+    writeRenderPng(map, wholeMap(map.grid()), (dir / "view.png").string(), view, "--view");
+  }
 
   RunRecord run = inMemoryRecord(job, plan, settings, h);
   run.design = job.design ? designReport(job, map, settings.outDir, settings.quiet) : json();
@@ -133,7 +140,8 @@ json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& 
     run.design["normal_deviation"] = normalDeviationReport(job, settings.outDir, settings.quiet);
   run.writeSeconds = secondsSince(tWrite);
   run.totalSeconds = secondsSince(tStart);
-  const json report = simulationReport(run);
+  json report = simulationReport(run);
+  if (settings.view) report["outputs"].push_back("view.png");
   writeReport(report, settings.outDir);
   return report;
 }
@@ -192,6 +200,10 @@ RunOutcome runSimulation(Job job, const RunSettings& settings) {
                              "use a larger grid.spacing");
     requireBandsFitDisk(job, plan, settings.outDir);
   }
+  if (plan.inBands && settings.view)
+    throw InputError("--view", "needs the whole map in memory, and this run is in bands (--tiled, "
+                               "--tile-rows, --bands, or a map too large); render its heights "
+                               "afterwards with `scallop render DIR/heights.exr -o view.png`");
   if (plan.inBands) return runTiledSimulation(std::move(job), plan, settings);
   return {RunOutcome::Kind::kInMemory, runInMemory(job, plan, settings, tStart)};
 }

@@ -26,6 +26,9 @@ struct RunSettings {
   bool tiled = false;
   int64_t tileRows = 0;  // rows per band, 0: bands of <= 256 MB
   std::string bands;     // "K:M": only bands K..M-1, written as DIR/band-K.raw for merge
+  // Also DIR/view.png, the ray-traced 3-D picture of `scallop render` with its defaults
+  // (tools/render/render_png.h); the whole map in memory only.
+  bool view = false;
 
   // Called after every tile of cells with the cells done and in all. It may throw to
   // cancel the run (the CLI's Ctrl-C, tools/cli/interrupt.h); nothing is written then.

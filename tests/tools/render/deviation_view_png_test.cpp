@@ -1,10 +1,12 @@
 // deviation_view.png (tools/render/deviation_view_png.h): each facet shows the colour of
 // its own deviation (red below the design, blue material left, grey without a value),
 // the facet nearer the viewer hides the one behind, the background stays white, and a
-// point of the design lands on the pixel pixelOf() names.
+// point of the design lands on the pixel pixelOf() names; a facet above another casts
+// its shadow on it where the light says; the same bits on 1 and 2 threads.
 #include "tools/render/deviation_view_png.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <array>
 #include <cmath>
@@ -86,6 +88,37 @@ TEST(DeviationView, RedBelowTheDesignBlueAboveInAnyView) {
     EXPECT_GT(left.r, left.b + 60) << az;
     EXPECT_GT(right.b, right.r + 60) << az;
   }
+}
+
+TEST(DeviationView, AFacetAboveCastsItsShadow) {
+  // Seen from straight above, lit from the east (+x) 45 degrees up: the top square (z = 1
+  // over x in [1, 1.5]) shadows the floor over x in [0, 0.5] (one unit west of it), where
+  // the grey facets are 0.3 of their grey; beside the shadow they are lit by
+  // 0.3 + 0.7 sin 45 degrees.
+  const Scene s = threeSquares(-0.01, 0.01, 0.01);
+  DeviationView view;
+  view.elevationDeg = 90;
+  view.light = {90, 45};
+  const DeviationViewImage image = renderDeviationView(s.mesh, s.deviation, view, "test", 400);
+  const uint8_t grey = 160;
+  const png::Rgb shadow = pixel(image.canvas, image.pixelOf({0.25, 0.5, 0}));
+  const png::Rgb lit = pixel(image.canvas, image.pixelOf({0.75, 0.5, 0}));
+  EXPECT_EQ(shadow.r, std::lround(grey * 0.3));
+  EXPECT_EQ(lit.r, std::lround(grey * (0.3 + 0.7 * std::sqrt(0.5))));
+  EXPECT_EQ(shadow.r, shadow.b);
+}
+
+TEST(DeviationView, SameBitsOnOneAndTwoThreads) {
+  const Scene s = threeSquares(-0.01, 0.01, 0.004);
+  std::vector<uint8_t> bytes[2];
+  for (int threads : {1, 2}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    const DeviationViewImage image =
+        renderDeviationView(s.mesh, s.deviation, DeviationView(), "t", 300);
+    const png::Canvas& c = image.canvas;
+    bytes[threads - 1].assign(c.data(), c.data() + size_t(c.width()) * size_t(c.height()) * 3);
+  }
+  EXPECT_TRUE(bytes[0] == bytes[1]);
 }
 
 }  // namespace

@@ -179,7 +179,13 @@ TEST_F(NormalDeviationRun, BadDesignsAndKeysAreErrorsWithNothingWritten) {
         std::pair{R"("normal_deviation": true, "view": {"azimuth_deg": "north"})",
                   "design.view.azimuth_deg"},
         std::pair{R"("normal_deviation": true, "view": {"tilt_deg": 3})", "design.view"},
-        std::pair{R"("view": {"azimuth_deg": 10})", "design.view"}}) {
+        std::pair{R"("view": {"azimuth_deg": 10})", "design.view"},
+        std::pair{R"("normal_deviation": true, "view": {"light_azimuth_deg": 10})", "design.view"},
+        std::pair{R"("normal_deviation": true, "view": {"light_azimuth_deg": 10,
+                  "light_elevation_deg": 0})",
+                  "design.view.light_elevation_deg"},
+        std::pair{R"("normal_deviation": true, "view": {"projection": "fisheye"})",
+                  "design.view.projection"}}) {
     std::string job = kJob;
     job.replace(job.find(R"("normal_deviation": true, "gouge_depth": 1)"),
                 std::strlen(R"("normal_deviation": true, "gouge_depth": 1)"), bad);
