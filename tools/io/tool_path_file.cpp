@@ -204,7 +204,8 @@ double segmentToBoxXY(const Vec3& a, const Vec3& b, const Vec3& lo, const Vec3& 
 }  // namespace
 
 void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3& stock,
-                         const std::string& source, const StockSolid* solid) {
+                         const std::string& source, const StockSolid* solid,
+                         const std::string& stockName) {
   const Vec3 down{0, 0, -1};
   for (size_t k = 0; k < file.path.moves.size(); ++k) {
     const Move& mv = file.path.moves[k];
@@ -236,13 +237,28 @@ void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3
     const double reach =
         cutter.radius + cutter.fluteLength * std::max(lean(mv.from.axis), lean(mv.to.axis));
     if (segmentToBoxXY(a, b, stock.min, stock.max) >= reach) continue;
-    double solidTop = top;
-    if (solid && !solid->reachesAbove(a, b, reach, std::min(z0, z1), &solidTop)) continue;
-    file.warnings.add(
-        source + ":" + std::to_string(file.moveLines[k]),
-        fmt::format("rapid move cuts the stock (cutter's lowest point at z = {:g} mm, below the "
-                    "stock top z = {:g} mm, over the stock): a crash on the machine",
-                    std::min(z0, z1), solidTop));
+    const double lowest = std::min(z0, z1);
+    const Vec3 lowTip = z0 <= z1 ? mv.from.tip : mv.to.tip;
+    // What the check knows: the stock as it started, not what earlier moves left.
+    const char* initial =
+        "judged against the stock as it started, not the material earlier moves left: a crash "
+        "on the machine unless they removed it";
+    std::string what;
+    if (solid) {
+      Vec3 met;
+      if (!solid->reachesAbove(a, b, reach, lowest, &met)) continue;
+      what = fmt::format(
+          "rapid move cuts {}: the solid rises to z = {:g} mm at (x, y) = ({:g}, {:g}) mm within "
+          "the cutter's reach of the move, {:g} mm above the cutter's lowest point (z = {:g} mm); {}",
+          stockName, met.z, met.x, met.y, met.z - lowest, lowest, initial);
+    } else {
+      what = fmt::format(
+          "rapid move cuts {}: the cutter's lowest point, z = {:g} mm with the tip at (x, y) = "
+          "({:g}, {:g}) mm, is {:g} mm below its top z = {:g} mm within the cutter's reach of "
+          "it; {}",
+          stockName, lowest, lowTip.x, lowTip.y, top - lowest, top, initial);
+    }
+    file.warnings.add(source + ":" + std::to_string(file.moveLines[k]), what);
   }
 }
 

@@ -152,8 +152,14 @@ ToolPath parseToolPath(const std::string& text, const std::string& source);
 // itself: flagged only when a point of the solid higher than the cutter's lowest point
 // (the lowest over the part of the move below the box top) lies within the horizontal
 // reach of the tip's path there (StockSolid::reachesAbove, exact, not sampled).
+// The warning names the stock (`stockName`: "the stock box", "the solid stock
+// blank.stl"...), the cutter's lowest point and, for a box, the tip there and the
+// depth below the top; for a solid, its highest point within the cutter's reach and
+// how far above the cutter's lowest point it is. Every check is against the stock as it
+// started: a rapid through material earlier moves removed is flagged all the same.
 void warnRapidsIntoStock(ToolPathFile& file, const Cutter& cutter, const Box3& stock,
-                         const std::string& source, const StockSolid* solid = nullptr);
+                         const std::string& source, const StockSolid* solid = nullptr,
+                         const std::string& stockName = "the stock box");
 
 // A tool axis read from a file: a vector already unit to round-off (as CAM systems
 // print them, 17 digits round-trip) is kept bit for bit, so the sweep's own

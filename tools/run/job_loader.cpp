@@ -57,7 +57,11 @@ void readPathFile(Job& job) {
                       "its CUTTER/ differs from the job's \"tool\"; the job's "
                       "tool is used");
   checkPathMagnitudes(read.path, read.moveLines, job.pathFile);
-  warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile, job.stockSolid.get());
+  const std::string stockName =
+      job.stockSolid ? "the solid stock " + job.stockStlFile
+      : job.stockMap ? "the bounding box of the stock map " + job.stockGsfFile
+                     : "the stock box";
+  warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile, job.stockSolid.get(), stockName);
   job.path = std::move(read.path);
   job.moveLines = std::move(read.moveLines);
   job.pathWarnings = std::move(read.warnings);
