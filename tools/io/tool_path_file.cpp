@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -50,6 +51,7 @@ void ToolPathFile::addMove(const Pose& from, const Pose& to, bool rapid, int64_t
                       available / double(1ull << 30)));
   }
   if (takePart && n >= partMoves) handOverPart();
+  if (filter && n > 0) filter->judgeLast(path, moveLines);  // the last move is complete
   path.moves.push_back(Move{from, to, rapid});
   moveLines.push_back(line);
 }
@@ -265,11 +267,13 @@ void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3
 namespace {
 
 void readInto(const std::string& path, const PathFileOptions& options, ToolPathFile& file) {
+  const auto start = std::chrono::steady_clock::now();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the tool-path file");
   const std::string ext = lowerExtension(path);
   file.source = path;
   file.memoryBytes = options.memoryBytes;
+  if (options.window && !file.takePart) file.filter = std::make_shared<MoveWindowFilter>(*options.window);
   if (ext == ".txt" || (ext == ".cl" && looksLikeClText(in))) {
     readClText(in, path, file, options.axesFromAbove);
   } else if (ext == ".cl" || ext == ".apt" || ext == ".cls") {
@@ -282,6 +286,17 @@ void readInto(const std::string& path, const PathFileOptions& options, ToolPathF
                                ".gcode, .tap (G-code) or .txt (x y z [i j k] per line)");
   }
   if (in.bad()) throw InputError(path, "read error");
+  file.movesRead = file.path.moves.size();
+  if (file.filter) {
+    file.filter->finish(file.path, file.moveLines);
+    file.movesRead = file.filter->movesRead();
+    file.filter.reset();
+  }
+  in.clear();
+  in.seekg(0, std::ios::end);
+  file.fileBytes = double(in.tellg());
+  file.readSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include <functional>
 #include <iosfwd>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "base/vec3.h"
 #include "sweep/cutter.h"
 #include "sweep/pose.h"
+#include "tools/io/move_window.h"
 
 namespace scallop {
 
@@ -91,6 +93,9 @@ struct PathFileOptions {
   // The memory the moves may take, bytes; 0: what the machine has available
   // (base/available_memory.h), checked from a million moves on. See ToolPathFile::addMove.
   double memoryBytes = 0;
+  // Keep only the moves that can reach this grid (tools/io/move_window.h); a file read
+  // as a stream (streamToolPathFile) keeps every move.
+  std::optional<ReadWindow> window;
 };
 
 struct ToolPathFile {
@@ -108,6 +113,11 @@ struct ToolPathFile {
   IgnoredWords ignored;
   std::string source;      // the file, for the memory refusal
   double memoryBytes = 0;  // PathFileOptions::memoryBytes
+  // With PathFileOptions::window: every move the file made, and the seconds and bytes of
+  // the read (report.json path_file).
+  size_t movesRead = 0;
+  double readSeconds = 0, fileBytes = 0;
+  std::shared_ptr<MoveWindowFilter> filter;  // PathFileOptions::window, while reading
 
   // Appends a move from the current location (the last move's end). Never killed for
   // memory: before the moves' arrays grow (doubling: the old and the new are held at

@@ -25,7 +25,14 @@ json pathFileReport(const Job& job, bool quiet) {
   for (const IgnoredWords::Entry& e : job.ignoredWords.entries)
     ignored.push_back(
         {{"word", e.word}, {"meaning", e.meaning}, {"count", e.count}, {"lines", e.lines}});
+  // The read: every move of the file, those kept (that can reach the grid), the rate.
+  const double seconds = job.pathReadSeconds;
   json r = {{"format", job.pathFormat},
+            {"moves_read", job.movesRead},
+            {"moves_kept", job.path.moves.size()},
+            {"read_seconds", seconds},
+            {"read_mb_per_second", seconds > 0 ? job.pathFileBytes / 1e6 / seconds : 0.0},
+            {"read_moves_per_second", seconds > 0 ? double(job.movesRead) / seconds : 0.0},
             {"warnings", w.kept},
             {"warnings_total", w.total},
             {"ignored_words", ignored}};
