@@ -76,6 +76,7 @@ struct Job {
   // can reach the grid, tools/io/move_window.h), the file's bytes and the seconds taken.
   size_t movesRead = 0;
   double pathFileBytes = 0, pathReadSeconds = 0;
+  std::vector<MoveWindowFilter::ToolMoves> toolMoves;  // every cutting move read, by tool
   // The options the path file was read with (pathOptions() when it was read: its flute
   // count may come from the file's own cutter), so that a re-read makes the same moves.
   PathFileOptions pathReadOptions;

@@ -129,6 +129,12 @@ void MoveWindowFilter::judgeLast(ToolPath& path, std::vector<int64_t>& lines) {
   const size_t k = path.moves.size() - 1;
   const Move& mv = path.moves[k];
   ++read_;
+  if (!mv.rapid) {
+    if (toolMoves_.size() <= mv.tool) toolMoves_.resize(size_t(mv.tool) + 1);
+    ToolMoves& t = toolMoves_[mv.tool];
+    if (t.count++ == 0) t.firstLine = lines[k];
+    t.lastLine = lines[k];
+  }
   Judged j;
   j.cutting = !mv.rapid;
   j.phase = phase_;

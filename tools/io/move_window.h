@@ -58,6 +58,12 @@ class MoveWindowFilter {
   void finish(ToolPath& path, std::vector<int64_t>& lines);
 
   size_t movesRead() const { return read_; }
+  // Per tool index (Move::tool), of every cutting move read: how many, the first and the
+  // last line (report.json path_file.tools describes the program, not the window).
+  struct ToolMoves {
+    int64_t count = 0, firstLine = 0, lastLine = 0;
+  };
+  const std::vector<ToolMoves>& toolMoves() const { return toolMoves_; }
   size_t movesLeftOut() const { return leftOut_; }
 
  private:
@@ -88,6 +94,7 @@ class MoveWindowFilter {
   Vec3 lastKeptTo_, lastKeptAxis_;
   bool previousLeftOut_ = false;  // the last final move was left out
   size_t read_ = 0, leftOut_ = 0, kept_ = 0;
+  std::vector<ToolMoves> toolMoves_;
 };
 
 }  // namespace scallop

@@ -290,6 +290,7 @@ void readInto(const std::string& path, const PathFileOptions& options, ToolPathF
   if (file.filter) {
     file.filter->finish(file.path, file.moveLines);
     file.movesRead = file.filter->movesRead();
+    file.toolMoves = file.filter->toolMoves();
     file.filter.reset();
   }
   in.clear();

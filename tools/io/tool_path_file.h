@@ -117,6 +117,7 @@ struct ToolPathFile {
   // the read (report.json path_file).
   size_t movesRead = 0;
   double readSeconds = 0, fileBytes = 0;
+  std::vector<MoveWindowFilter::ToolMoves> toolMoves;  // of every move read, by tool index
   std::shared_ptr<MoveWindowFilter> filter;  // PathFileOptions::window, while reading
 
   // Appends a move from the current location (the last move's end). Never killed for

@@ -53,6 +53,7 @@ void readPathFile(Job& job) {
   job.movesRead = read.movesRead;
   job.pathFileBytes = read.fileBytes;
   job.pathReadSeconds = read.readSeconds;
+  job.toolMoves = read.toolMoves;
   const bool multiTool = !read.path.cutters.empty();
   if (!job.hasTool && job.tools.empty() && !read.cutter)
     throw InputError("tool",

@@ -41,12 +41,19 @@ json pathFileReport(const Job& job, bool quiet) {
     // The tools of a multi-tool program, each with the cutting moves it makes.
     std::vector<int64_t> moves(cutters.size(), 0), first(cutters.size(), 0),
         last(cutters.size(), 0);
-    for (size_t k = 0; k < job.path.moves.size(); ++k) {
-      const Move& m = job.path.moves[k];
-      if (m.rapid || m.tool >= cutters.size()) continue;
-      const int64_t line = k < job.moveLines.size() ? job.moveLines[k] : 0;
-      if (moves[m.tool]++ == 0) first[m.tool] = line;
-      last[m.tool] = line;
+    // Of every move read when the reader left some out (tools/io/move_window.h).
+    if (!job.toolMoves.empty()) {
+      for (size_t t = 0; t < cutters.size() && t < job.toolMoves.size(); ++t)
+        moves[t] = job.toolMoves[t].count, first[t] = job.toolMoves[t].firstLine,
+        last[t] = job.toolMoves[t].lastLine;
+    } else {
+      for (size_t k = 0; k < job.path.moves.size(); ++k) {
+        const Move& m = job.path.moves[k];
+        if (m.rapid || m.tool >= cutters.size()) continue;
+        const int64_t line = k < job.moveLines.size() ? job.moveLines[k] : 0;
+        if (moves[m.tool]++ == 0) first[m.tool] = line;
+        last[m.tool] = line;
+      }
     }
     json tools = json::array();
     for (size_t t = 0; t < cutters.size(); ++t) {
