@@ -74,7 +74,7 @@ GcodeBlock lexGcodeBlock(const std::string& line, const std::string& where, bool
       refuseExponent(line, k, where);
       compact += 'E';
     } else if (c != ' ' && c != '\t' && c != '\r') {
-      compact += char(std::toupper(static_cast<unsigned char>(c)));
+      compact += c >= 'a' && c <= 'z' ? char(c - 'a' + 'A') : c;  // ASCII: no locale call
     }
   }
   if (compact.empty()) return block;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cctype>
 #include <cmath>
@@ -84,7 +85,14 @@ bool parseDecimal(const std::string& token, double& value) {
     if (expDigits == 0) return false;
   }
   if (k != n) return false;
-  value = std::strtod(token.c_str(), nullptr);
+  // std::from_chars rounds correctly, as strtod does (the same double), without the
+  // locale and at several times the speed; it takes no '+'.
+  const char* first = token.data() + (token[0] == '+' ? 1 : 0);
+  const auto [end, error] = std::from_chars(first, token.data() + n, value);
+  if (error == std::errc::result_out_of_range)  // beyond double, or below: strtod's answer
+    value = std::strtod(token.c_str(), nullptr);
+  else if (end != token.data() + n)
+    return false;
   return std::isfinite(value);  // overflow to inf is not a coordinate
 }
 
