@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -87,6 +89,15 @@ TEST_F(MoveWindow, KeepsExactlyTheMovesThatCanReachIt) {
   EXPECT_EQ(window.movesRead, all.path.moves.size());
   EXPECT_EQ(window.path.moves.size(), reaching);
   EXPECT_LT(reaching, all.path.moves.size() / 10);  // a small window keeps few
+  // report.json says both counts and the read's rate.
+  const test::CliRun r = run("simulate " + path("w.json") + " -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json read =
+      nlohmann::json::parse(test::slurp(dir_ / "out" / "report.json")).at("path_file");
+  EXPECT_EQ(read.at("moves_read"), all.path.moves.size());
+  EXPECT_EQ(read.at("moves_kept"), reaching);
+  EXPECT_GT(read.at("read_moves_per_second").get<double>(), 0);
+  EXPECT_GT(read.at("read_mb_per_second").get<double>(), 0);
   EXPECT_GT(reaching, 10u);
   // Each move kept is one of the file's, at its line.
   for (size_t k = 0; k < window.path.moves.size(); ++k) {
