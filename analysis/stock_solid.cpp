@@ -109,30 +109,98 @@ double polygonToSegment(const std::vector<Point2>& poly, Point2 a, Point2 b) {
 
 }  // namespace
 
+namespace {
+
+// The highest point of the facet part `poly` (convex, in 3D, above the clipping height)
+// whose xy lies within `reach` of the segment a-b: the largest of a linear height over
+// a convex set (the polygon and the capsule about a-b), so at a polygon corner inside
+// the capsule, where a polygon edge crosses the capsule's boundary, or at the
+// capsule's own highest point (a or b moved `reach` uphill) inside the polygon. The
+// crossings are found by bisection on the edge's distance (convex along it) to 1e-12
+// of the edge. -HUGE_VAL z when no such point exists.
+Vec3 highestWithin(const std::vector<Vec3>& poly, Point2 a, Point2 b, double reach) {
+  Vec3 best{0, 0, -HUGE_VAL};
+  auto take = [&](const Vec3& p) {
+    if (p.z > best.z) best = p;
+  };
+  auto dist = [&](const Vec3& p) { return pointToSegment({p.x, p.y}, a, b); };
+  const size_t n = poly.size();
+  for (size_t k = 0; k < n; ++k) {
+    const Vec3 p = poly[k], q = poly[(k + 1) % n];
+    if (dist(p) <= reach) take(p);
+    auto at = [&](double s) { return p + (q - p) * s; };
+    // The edge's closest point (golden section on a convex function), then the
+    // crossings on either side of it.
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 80 && hi - lo > 1e-13; ++it) {
+      const double m1 = lo + (hi - lo) * 0.381966, m2 = hi - (hi - lo) * 0.381966;
+      if (dist(at(m1)) <= dist(at(m2)))
+        hi = m2;
+      else
+        lo = m1;
+    }
+    const double sMin = 0.5 * (lo + hi);
+    if (dist(at(sMin)) > reach) continue;
+    take(at(sMin));
+    for (const double outer : {0.0, 1.0}) {
+      if (dist(at(outer)) <= reach) continue;  // the corner itself is in
+      double in = sMin, out = outer;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (in + out);
+        (dist(at(mid)) <= reach ? in : out) = mid;
+      }
+      take(at(in));
+    }
+  }
+  // The plane's uphill direction in xy (none for a facet seen edge-on or level).
+  const Vec3 normal = cross(poly[1] - poly[0], poly[2] - poly[0]);
+  if (n >= 3 && normal.z != 0) {
+    const double gx = -normal.x / normal.z, gy = -normal.y / normal.z, g = std::hypot(gx, gy);
+    const std::vector<Point2> xy = [&] {
+      std::vector<Point2> out;
+      for (const Vec3& p : poly) out.push_back({p.x, p.y});
+      return out;
+    }();
+    for (const Point2 end : {a, b}) {
+      const Point2 c = g > 0 ? Point2{end.x + reach * gx / g, end.y + reach * gy / g} : end;
+      bool pos = false, neg = false;
+      for (size_t k = 0; k < n; ++k) {
+        const double s = cross2(xy[k], xy[(k + 1) % n], c);
+        pos |= s > 0;
+        neg |= s < 0;
+      }
+      if (!(pos && neg))
+        take({c.x, c.y, poly[0].z + gx * (c.x - poly[0].x) + gy * (c.y - poly[0].y)});
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
 bool StockSolid::reachesAbove(const Vec3& a, const Vec3& b, double reach, double z,
-                              double* highest) const {
+                              Vec3* highest) const {
   const Point2 a2{a.x, a.y}, b2{b.x, b.y};
   bool found = false;
-  double top = -HUGE_VAL;
+  Vec3 top{0, 0, -HUGE_VAL};
   std::vector<Point2> clipped;
+  std::vector<Vec3> clipped3;
   for (size_t t = 0; t < mesh_.triangles.size(); ++t) {
     const auto c = mesh_.corners(t);
-    // The facet's part above z (Sutherland-Hodgman against one plane), in xy.
+    // The facet's part above z (Sutherland-Hodgman against one plane).
     clipped.clear();
-    double facetTop = -HUGE_VAL;
+    clipped3.clear();
     for (int k = 0; k < 3; ++k) {
       const Vec3 p = c[k], q = c[(k + 1) % 3];
-      if (p.z > z) clipped.push_back({p.x, p.y}), facetTop = std::max(facetTop, p.z);
-      if ((p.z > z) != (q.z > z)) {
-        const double s = (z - p.z) / (q.z - p.z);
-        clipped.push_back({p.x + s * (q.x - p.x), p.y + s * (q.y - p.y)});
-      }
+      if (p.z > z) clipped3.push_back(p);
+      if ((p.z > z) != (q.z > z)) clipped3.push_back(p + (q - p) * ((z - p.z) / (q.z - p.z)));
     }
-    if (clipped.empty() || facetTop <= top) continue;
-    if (polygonToSegment(clipped, a2, b2) < reach) {
-      found = true;
-      top = facetTop;
-    }
+    for (const Vec3& p : clipped3) clipped.push_back({p.x, p.y});
+    if (clipped.empty() || polygonToSegment(clipped, a2, b2) >= reach) continue;
+    found = true;
+    if (!highest) break;
+    const Vec3 h = highestWithin(clipped3, a2, b2, reach);
+    if (h.z > top.z) top = h;
   }
   if (highest) *highest = top;
   return found;

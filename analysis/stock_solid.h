@@ -35,9 +35,11 @@ class StockSolid {
   // Whether some point of the solid higher than `z` (mm) lies within horizontal
   // distance `reach` (mm) of the segment a-b seen from above (a, b's z ignored). Exact
   // in double: each facet is clipped to z > `z` and its distance to the segment in xy
-  // computed, no sampling. `highest` receives the highest such point's z.
+  // computed, no sampling. `highest` receives the highest point of the solid within
+  // `reach` of a-b (seen from above; its crossings with the reach's boundary found by
+  // bisection to 1e-12 of a facet's edge): what a rapid there meets, and how high.
   bool reachesAbove(const Vec3& a, const Vec3& b, double reach, double z,
-                    double* highest = nullptr) const;
+                    Vec3* highest = nullptr) const;
 
  private:
   TriangleMesh mesh_;

@@ -195,7 +195,12 @@ SimulationResult simulate(const Cutter& cutter, const ToolPath& path, const Box3
   const auto phaseDone = [&] {
     if (options.cast.progress) options.cast.progress(0, grid.cells());
   };
-  const std::unique_ptr<SweptScene> scene = buildScene(cutter, path, stock, grid.spacing, options);
+  // Only the moves that may reach the grid's cell lines are swept: a window of a large
+  // program builds the scene of its own moves (judged after merging, so the heights are
+  // the whole scene's, bit for bit, as for a band: tools/run/tiled_simulation.h).
+  const SweepWindow window = cellWindow(grid);
+  const std::unique_ptr<SweptScene> scene =
+      buildScene(cutter, path, stock, grid.spacing, options, &window);
   phaseDone();
   SimulationResult result;
   result.map = ZMap(grid, stock.max.z);

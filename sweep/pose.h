@@ -87,6 +87,15 @@ struct ToolPath {
   TableMachine machine;
   // The arcs of the moves that follow one (Move::arc).
   std::vector<ArcMotion> arcs;
+  // The teeth model's spindle angle (rad) at the start of moves whose predecessors in the
+  // program were left out (a reader keeping only the moves that can reach the grid,
+  // tools/io/move_window.h), sorted by move: the sweep takes it there instead of carrying
+  // its own across the gap, so the phase is the whole program's.
+  struct PhaseMark {
+    size_t move;
+    double phase;
+  };
+  std::vector<PhaseMark> phaseMarks;
   size_t cuttingMoves() const;
   // The path of move k alone, with its cutter and machine motion (for sweeping one
   // move apart from the others).

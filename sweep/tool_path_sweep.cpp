@@ -171,8 +171,11 @@ void ToolPathSweeper::State::attachTeeth(SweptMove& m, const Spindle& sp) const 
 }
 
 void ToolPathSweeper::State::add(const ToolPath& path) {
+  size_t mark = 0;
   for (size_t k = 0; k < path.moves.size(); ++k) {
     const Move& mv = path.moves[k];
+    if (mark < path.phaseMarks.size() && path.phaseMarks[mark].move == k)
+      phase = path.phaseMarks[mark++].phase;  // moves before this one were left out
     const size_t number = ++moves;
     double radPerMm = 0;
     if (teeth && mv.tool < cutters.size()) {

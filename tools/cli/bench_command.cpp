@@ -40,6 +40,16 @@ void printTable(std::FILE* out, const json& doc) {
                  c["cast_seconds"].get<double>(), c["scene_moves_per_s"].get<double>(),
                  c["scene_bytes_per_move"].get<double>(),
                  c["peak_beyond_map_bytes_per_move"].get<double>());
+  if (doc.contains("reading")) {
+    // B11: the G-code reader's rate on one core (tools/run/read_bench.h).
+    const json& r = doc["reading"];
+    std::fprintf(out, "\n%-4s %10s %9s %10s %9s %12s\n", "case", "MB", "moves", "seconds", "MB/s",
+                 "moves/s");
+    std::fprintf(out, "%-4s %10.1f %9lld %10.3f %9.1f %12.0f\n", "B11",
+                 r["bytes"].get<double>() / 1e6, r["moves"].get<long long>(),
+                 r["seconds"].get<double>(), r["mb_per_s"].get<double>(),
+                 r["moves_per_s"].get<double>());
+  }
   bool teeth = false;
   for (const json& c : doc["cases"]) teeth = teeth || c.contains("teeth_over_envelope");
   if (teeth) {
@@ -103,7 +113,10 @@ constexpr const char* kBenchHelp =
     "     ap 0.4 mm, counter-clockwise, one pass over a 5 x 5 mm stock at 25 um;\n"
     "  B9 (only with --case B9) 10^6 moves: ball R1 finishing G-code over 100 x 50 mm\n"
     "     (--area A: A x A/2), passes 0.1 mm apart, a point every 0.05 mm, 20 um; reports\n"
-    "     the scene's build in moves/s and its bytes a move.\n"
+    "     the scene's build in moves/s and its bytes a move;\n"
+    "  B11 reading: B9's kind of G-code (10^6 plain G1 moves, 25 MB; --quick 20 x 10 mm,\n"
+    "     4 10^4 moves; --area A: A x A/2) generated into a temporary file and read as a\n"
+    "     user's file: MB/s and moves/s on one core.\n"
     "Each case runs through simulate() at 1 thread and at --threads (default 2), twice\n"
     "each (alternating; the faster run counts), and reports cells, moves, exact\n"
     "evaluations per cell, seconds, Mcells/s, peak memory and the 2-vs-1-thread\n"
@@ -124,8 +137,9 @@ Command addBenchCommand(CLI::App& parent, CommonOptions& common) {
   app->add_flag("--json", *json, "Print one JSON document on stdout (and nothing else there)");
   app->add_flag("--quick", args->quick, "10x coarser grid spacing (10 um and 20 um): CI-friendly");
   app->add_option("--case", args->cases,
-                  "Run only this case (B1, B2, B3, B3c, B4, B5, B6, B7, B8, B9); may be repeated")
-      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B8", "B9"}));
+                  "Run only this case (B1, B2, B3, B3c, B4, B5, B6, B7, B8, B9, B11); may be "
+                  "repeated")
+      ->check(CLI::IsMember({"B1", "B2", "B3", "B3c", "B4", "B5", "B6", "B7", "B8", "B9", "B11"}));
   app->add_option("--area", args->area, "Square stock of this side, mm, instead of 20 mm")
       ->check(CLI::PositiveNumber);
   app->add_option("--stamp-window", args->stampWindow,

@@ -107,8 +107,9 @@ Command addExportCommand(CLI::App& parent, CommonOptions&) {
       "               (roughness: ISO 16610-21 Gaussian filter of --cutoff, when the line is\n"
       "               at least 3 cutoffs long; empty in the run-in and run-out)\n"
       "With --hillshade, --to OUT.png is instead a picture for people: the surface lit as a\n"
-      "relief (Lambert light from --azimuth, --elevation), grey, or with --colour the\n"
-      "preview's colour map; heights exaggerated by --exaggeration (default: automatic, so\n"
+      "relief (Lambert light from --azimuth, --elevation), grey, or with --colour\n"
+      "preview.png's picture (the same renderer, colours and exaggeration rule; cells\n"
+      "without material white); heights exaggerated by --exaggeration (default: automatic, so\n"
       "that micrometre scallops and feed marks show), the factor and the light in the\n"
       "legend, with a scale bar; --region crops it. Maps larger than 1600 cells a side\n"
       "are reduced (block minimum).");

@@ -16,6 +16,23 @@ bool isNumberChar(char c) {
   return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
 }
 
+// An E written straight after a word's number ("X1e300", "Y2E5") is an exponent in
+// other languages; G-code has none (LinuxCNC reads X1 and a word E300). Refused naming
+// the text as written, from the word's letter to the exponent's last digit, before the
+// lexer would take the E for a word of its own. `e` is the E's index in `line`.
+void refuseExponent(const std::string& line, size_t e, const std::string& where) {
+  size_t start = e;
+  while (start > 0 && isNumberChar(line[start - 1])) --start;
+  if (start == 0 || !std::isalpha(static_cast<unsigned char>(line[start - 1]))) return;
+  --start;  // the word's letter
+  if (std::toupper(static_cast<unsigned char>(line[start])) == 'O') return;  // O-words: below
+  size_t end = e + 1;
+  while (end < line.size() && isNumberChar(line[end])) ++end;
+  throw InputError(where, fmt::format("\"{}\": G-code numbers have no exponent; write the "
+                                      "number in plain decimals (scallop reads no E word)",
+                                      line.substr(start, end - start)));
+}
+
 }  // namespace
 
 int gcodeTenths(double v) {
@@ -52,8 +69,12 @@ GcodeBlock lexGcodeBlock(const std::string& line, const std::string& where, bool
                        "G-code with plain numbers, as CAM posts write it");
     } else if (c == '[') {
       throw InputError(where, "expressions (\"[...]\") are not supported");
+    } else if ((c == 'e' || c == 'E') && k > 0 &&
+               (std::isdigit(static_cast<unsigned char>(line[k - 1])) || line[k - 1] == '.')) {
+      refuseExponent(line, k, where);
+      compact += 'E';
     } else if (c != ' ' && c != '\t' && c != '\r') {
-      compact += char(std::toupper(static_cast<unsigned char>(c)));
+      compact += c >= 'a' && c <= 'z' ? char(c - 'a' + 'A') : c;  // ASCII: no locale call
     }
   }
   if (compact.empty()) return block;

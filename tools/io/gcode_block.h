@@ -7,7 +7,8 @@
 // the line is skipped when block delete is on, read otherwise. A line of '%' alone is a
 // program delimiter. "O1000" alone (a program number, Fanuc style) carries no words.
 // Refused, naming the line: '#' parameters, '[' expressions, O-word subprograms and
-// flow control (O100 sub/call/if..., O<name>), letters scallop does not read (U V W E
+// flow control (O100 sub/call/if..., O<name>), an E straight after a number (an
+// exponent, "X1e300": G-code has none), letters scallop does not read (U V W E
 // and others), a word twice, a number that is not a finite decimal.
 #pragma once
 

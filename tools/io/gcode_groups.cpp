@@ -30,7 +30,8 @@ GcodeGroups groupGcodeWords(const GcodeBlock& b, const MachineSpec* machine,
     slot = code;
   };
   for (double v : b.g) {
-    const std::string text = gcodeWordText('G', v);
+    // The word's text only for a machine's codes (formatting a double costs).
+    const std::string text = machine ? gcodeWordText('G', v) : std::string();
     if (machine && listed(machine->tcpOn, text)) {
       set(g.tcp, 1, "TCP");
       continue;
@@ -60,7 +61,7 @@ GcodeGroups groupGcodeWords(const GcodeBlock& b, const MachineSpec* machine,
       throw InputError(where, fmt::format("{} (cutter radius compensation) is not supported: "
                                           "scallop sweeps the programmed tool centre; post the "
                                           "path with compensation done in the CAM system",
-                                          text));
+                                          gcodeWordText('G', v)));
     } else if (c == 430 || c == 434 || c == 490) {
       set(g.length, c, "tool length");
     } else if (c >= 540 && c <= 590 && c % 10 == 0) {
@@ -79,9 +80,9 @@ GcodeGroups groupGcodeWords(const GcodeBlock& b, const MachineSpec* machine,
       throw InputError(where, fmt::format("{} (setting a coordinate system) is not supported; "
                                           "give the work offsets G54-G59 in the job "
                                           "(\"work_offsets\")",
-                                          text));
+                                          gcodeWordText('G', v)));
     } else {
-      throw InputError(where, "unsupported G-word " + text);
+      throw InputError(where, "unsupported G-word " + gcodeWordText('G', v));
     }
   }
   for (double v : b.m) {

@@ -72,6 +72,11 @@ struct Job {
   PathWarnings pathWarnings;
   IgnoredWords ignoredWords;         // words of the file that change no geometry
   std::vector<int64_t> toolNumbers;  // T number of path.cutters[k] (multi-tool files)
+  // The read (report.json path_file): every move the file made (`path` holds those that
+  // can reach the grid, tools/io/move_window.h), the file's bytes and the seconds taken.
+  size_t movesRead = 0;
+  double pathFileBytes = 0, pathReadSeconds = 0;
+  std::vector<MoveWindowFilter::ToolMoves> toolMoves;  // every cutting move read, by tool
   // The options the path file was read with (pathOptions() when it was read: its flute
   // count may come from the file's own cutter), so that a re-read makes the same moves.
   PathFileOptions pathReadOptions;

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
+#include <chrono>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -50,6 +52,7 @@ void ToolPathFile::addMove(const Pose& from, const Pose& to, bool rapid, int64_t
                       available / double(1ull << 30)));
   }
   if (takePart && n >= partMoves) handOverPart();
+  if (filter && n > 0) filter->judgeLast(path, moveLines);  // the last move is complete
   path.moves.push_back(Move{from, to, rapid});
   moveLines.push_back(line);
 }
@@ -82,7 +85,14 @@ bool parseDecimal(const std::string& token, double& value) {
     if (expDigits == 0) return false;
   }
   if (k != n) return false;
-  value = std::strtod(token.c_str(), nullptr);
+  // std::from_chars rounds correctly, as strtod does (the same double), without the
+  // locale and at several times the speed; it takes no '+'.
+  const char* first = token.data() + (token[0] == '+' ? 1 : 0);
+  const auto [end, error] = std::from_chars(first, token.data() + n, value);
+  if (error == std::errc::result_out_of_range)  // beyond double, or below: strtod's answer
+    value = std::strtod(token.c_str(), nullptr);
+  else if (end != token.data() + n)
+    return false;
   return std::isfinite(value);  // overflow to inf is not a coordinate
 }
 
@@ -204,7 +214,8 @@ double segmentToBoxXY(const Vec3& a, const Vec3& b, const Vec3& lo, const Vec3& 
 }  // namespace
 
 void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3& stock,
-                         const std::string& source, const StockSolid* solid) {
+                         const std::string& source, const StockSolid* solid,
+                         const std::string& stockName) {
   const Vec3 down{0, 0, -1};
   for (size_t k = 0; k < file.path.moves.size(); ++k) {
     const Move& mv = file.path.moves[k];
@@ -236,24 +247,41 @@ void warnRapidsIntoStock(ToolPathFile& file, const Cutter& jobCutter, const Box3
     const double reach =
         cutter.radius + cutter.fluteLength * std::max(lean(mv.from.axis), lean(mv.to.axis));
     if (segmentToBoxXY(a, b, stock.min, stock.max) >= reach) continue;
-    double solidTop = top;
-    if (solid && !solid->reachesAbove(a, b, reach, std::min(z0, z1), &solidTop)) continue;
-    file.warnings.add(
-        source + ":" + std::to_string(file.moveLines[k]),
-        fmt::format("rapid move cuts the stock (cutter's lowest point at z = {:g} mm, below the "
-                    "stock top z = {:g} mm, over the stock): a crash on the machine",
-                    std::min(z0, z1), solidTop));
+    const double lowest = std::min(z0, z1);
+    const Vec3 lowTip = z0 <= z1 ? mv.from.tip : mv.to.tip;
+    // What the check knows: the stock as it started, not what earlier moves left.
+    const char* initial =
+        "judged against the stock as it started, not the material earlier moves left: a crash "
+        "on the machine unless they removed it";
+    std::string what;
+    if (solid) {
+      Vec3 met;
+      if (!solid->reachesAbove(a, b, reach, lowest, &met)) continue;
+      what = fmt::format(
+          "rapid move cuts {}: the solid rises to z = {:g} mm at (x, y) = ({:g}, {:g}) mm within "
+          "the cutter's reach of the move, {:g} mm above the cutter's lowest point (z = {:g} mm); {}",
+          stockName, met.z, met.x, met.y, met.z - lowest, lowest, initial);
+    } else {
+      what = fmt::format(
+          "rapid move cuts {}: the cutter's lowest point, z = {:g} mm with the tip at (x, y) = "
+          "({:g}, {:g}) mm, is {:g} mm below its top z = {:g} mm within the cutter's reach of "
+          "it; {}",
+          stockName, lowest, lowTip.x, lowTip.y, top - lowest, top, initial);
+    }
+    file.warnings.add(source + ":" + std::to_string(file.moveLines[k]), what);
   }
 }
 
 namespace {
 
 void readInto(const std::string& path, const PathFileOptions& options, ToolPathFile& file) {
+  const auto start = std::chrono::steady_clock::now();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the tool-path file");
   const std::string ext = lowerExtension(path);
   file.source = path;
   file.memoryBytes = options.memoryBytes;
+  if (options.window && !file.takePart) file.filter = std::make_shared<MoveWindowFilter>(*options.window);
   if (ext == ".txt" || (ext == ".cl" && looksLikeClText(in))) {
     readClText(in, path, file, options.axesFromAbove);
   } else if (ext == ".cl" || ext == ".apt" || ext == ".cls") {
@@ -266,6 +294,18 @@ void readInto(const std::string& path, const PathFileOptions& options, ToolPathF
                                ".gcode, .tap (G-code) or .txt (x y z [i j k] per line)");
   }
   if (in.bad()) throw InputError(path, "read error");
+  file.movesRead = file.path.moves.size();
+  if (file.filter) {
+    file.filter->finish(file.path, file.moveLines);
+    file.movesRead = file.filter->movesRead();
+    file.toolMoves = file.filter->toolMoves();
+    file.filter.reset();
+  }
+  in.clear();
+  in.seekg(0, std::ios::end);
+  file.fileBytes = double(in.tellg());
+  file.readSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include <functional>
 #include <iosfwd>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "base/vec3.h"
 #include "sweep/cutter.h"
 #include "sweep/pose.h"
+#include "tools/io/move_window.h"
 
 namespace scallop {
 
@@ -91,6 +93,9 @@ struct PathFileOptions {
   // The memory the moves may take, bytes; 0: what the machine has available
   // (base/available_memory.h), checked from a million moves on. See ToolPathFile::addMove.
   double memoryBytes = 0;
+  // Keep only the moves that can reach this grid (tools/io/move_window.h); a file read
+  // as a stream (streamToolPathFile) keeps every move.
+  std::optional<ReadWindow> window;
 };
 
 struct ToolPathFile {
@@ -108,6 +113,12 @@ struct ToolPathFile {
   IgnoredWords ignored;
   std::string source;      // the file, for the memory refusal
   double memoryBytes = 0;  // PathFileOptions::memoryBytes
+  // With PathFileOptions::window: every move the file made, and the seconds and bytes of
+  // the read (report.json path_file).
+  size_t movesRead = 0;
+  double readSeconds = 0, fileBytes = 0;
+  std::vector<MoveWindowFilter::ToolMoves> toolMoves;  // of every move read, by tool index
+  std::shared_ptr<MoveWindowFilter> filter;  // PathFileOptions::window, while reading
 
   // Appends a move from the current location (the last move's end). Never killed for
   // memory: before the moves' arrays grow (doubling: the old and the new are held at
@@ -152,8 +163,14 @@ ToolPath parseToolPath(const std::string& text, const std::string& source);
 // itself: flagged only when a point of the solid higher than the cutter's lowest point
 // (the lowest over the part of the move below the box top) lies within the horizontal
 // reach of the tip's path there (StockSolid::reachesAbove, exact, not sampled).
+// The warning names the stock (`stockName`: "the stock box", "the solid stock
+// blank.stl"...), the cutter's lowest point and, for a box, the tip there and the
+// depth below the top; for a solid, its highest point within the cutter's reach and
+// how far above the cutter's lowest point it is. Every check is against the stock as it
+// started: a rapid through material earlier moves removed is flagged all the same.
 void warnRapidsIntoStock(ToolPathFile& file, const Cutter& cutter, const Box3& stock,
-                         const std::string& source, const StockSolid* solid = nullptr);
+                         const std::string& source, const StockSolid* solid = nullptr,
+                         const std::string& stockName = "the stock box");
 
 // A tool axis read from a file: a vector already unit to round-off (as CAM systems
 // print them, 17 digits round-trip) is kept bit for bit, so the sweep's own

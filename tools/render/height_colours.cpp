@@ -30,14 +30,15 @@ namespace {
 
 // Marks, along one line of cells (`step` apart from `first`, `n` of them), every cell
 // of a strictly falling run that starts at the line's end or beside an uncut cell
-// (z >= top), walking away from it; uncut cells themselves are marked too.
+// (z >= top) or one without material (NaN), walking away from it; uncut cells
+// themselves are marked too.
 void markFallingRuns(const std::vector<double>& z, size_t first, ptrdiff_t step, int n, double top,
                      std::vector<bool>& marked) {
   bool falling = true;
   double previous = HUGE_VAL;
   for (int k = 0; k < n; ++k) {
     const size_t c = size_t(ptrdiff_t(first) + k * step);
-    if (z[c] >= top) {
+    if (z[c] >= top || std::isnan(z[c])) {  // uncut, or no material: an edge
       marked[c] = true, falling = true, previous = HUGE_VAL;
     } else if (falling && z[c] < previous) {
       marked[c] = true, previous = z[c];
@@ -78,8 +79,11 @@ std::vector<bool> edgeFlanks(const HeightRaster& p, double top) {
 // the cells cannot stretch it either. Falls back to the whole range when the cut
 // region is empty or flat.
 std::pair<double, double> robustRange(const HeightRaster& p, double uncutHeight) {
-  const double highest = *std::max_element(p.z.begin(), p.z.end());
-  const double bottom = *std::min_element(p.z.begin(), p.z.end());
+  // Cells without material (NaN) take no part.
+  double highest = -HUGE_VAL, bottom = HUGE_VAL;
+  for (double z : p.z)
+    if (!std::isnan(z)) highest = std::max(highest, z), bottom = std::min(bottom, z);
+  if (bottom > highest) return {0.0, 0.0};  // no cell holds material
   const double top = std::isnan(uncutHeight) ? highest : uncutHeight;
   const std::vector<bool> flank = edgeFlanks(p, top);
   std::vector<double> cut, inner;

@@ -49,7 +49,9 @@ double writeHillshadePng(const ZMap& map, const std::string& path, const Hillsha
     preview.title = options.title;
     preview.light = options.light;
     preview.exaggeration = options.exaggeration;
-    preview.textureBoost = 1;  // one exaggeration, as the grey picture
+    // The preview's rule: automatic exaggeration and texture boost; a given exaggeration
+    // is used alone, for everything.
+    if (!std::isnan(options.exaggeration)) preview.textureBoost = 1;
     return writePreviewPng(map, path, preview);
   }
   const ReliefGrid relief =

@@ -2,8 +2,11 @@
 // the surface lit as a relief (tools/render/relief_shading.h), grey, 8-bit RGB, north
 // up, with a scale bar and a legend stating the vertical exaggeration and the light.
 // Grey level = round(255 * max(0, n . l)): a flat floor under the default light (45
-// degrees up) is 180. With `colour` the picture is preview.png's instead (viridis
-// times the same shading, with a colour bar; tools/render/preview_png.h).
+// degrees up) is 180. With `colour` the picture is preview.png's instead, drawn by the
+// same code with the same rule (viridis times the same shading, the texture boost when
+// the exaggeration is automatic, a colour bar, cells without material white;
+// tools/render/preview_png.h), so that it equals a simulation's preview of the heights
+// but for the cells not cut, which a file does not tell.
 #pragma once
 
 #include <cmath>

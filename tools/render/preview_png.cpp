@@ -14,6 +14,7 @@
 #include "base/input_error.h"
 #include "tools/io/atomic_file.h"
 #include "tools/render/height_colours.h"
+#include "tools/render/map_cells.h"
 #include "tools/render/png_canvas.h"
 #include "tools/render/relief_shading.h"
 
@@ -42,9 +43,6 @@ constexpr double kAmbient = 0.3;
 // The texture box's half side, raster cells: texture finer than 25 cells (a few
 // millimetres on screen) is what automaticTextureBoost may exaggerate further.
 constexpr int kTextureRadius = 12;
-// Cells that no move reached: a neutral grey, apart from viridis's saturated colours,
-// unshaded (the stock top is flat).
-constexpr Rgb kUncut{185, 185, 185};
 
 struct Tick {
   double value;
@@ -96,7 +94,15 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   }
   const double flat = std::sin(options.light.elevationDeg * kRadPerDeg);
   const double maxShade = kAmbient + (1 - kAmbient) / flat;
-  const auto [cutLow, cutHigh] = robustRange(grid, options.uncutHeight);
+  // What each cell shows; the colour range comes from the cut cells.
+  HeightRaster stock;
+  if (options.stockHeights) stock = reduceMap(*options.stockHeights, std::max(16, options.maxPixels));
+  const std::vector<CellKind> kinds =
+      cellKinds(grid, options.uncutHeight, options.stockHeights ? &stock : nullptr);
+  HeightRaster cutOnly = grid;
+  for (size_t c = 0; c < kinds.size(); ++c)
+    if (kinds[c] != CellKind::Cut) cutOnly.z[c] = NAN;
+  const auto [cutLow, cutHigh] = robustRange(cutOnly, options.uncutHeight);
   const double zmin = std::isnan(options.zMin) ? cutLow : options.zMin;
   const double zmax = std::isnan(options.zMax) ? cutHigh : options.zMax;
   const double range = zmax - zmin;
@@ -120,17 +126,16 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   const std::vector<std::string> shading =
       reliefLegend(exaggeration, options.light, boost, (2 * kTextureRadius + 1) * grid.cellMm);
   const int shadingY = scaleY + textH + 14, lineH = textH + 10;
-  auto uncut = [&](double z) { return z >= options.uncutHeight; };  // false for NaN
-  const bool anyUncut = std::any_of(grid.z.begin(), grid.z.end(), uncut);
-  const std::string uncutLabel = "uncut: no move reached these cells";
-  const int uncutX = mapX + textH + 8;  // after a swatch of textH x textH
-  const int uncutY = shadingY + int(shading.size()) * lineH;
+  const std::vector<CellLegendLine> cellLines = cellLegend(kinds);
+  const int swatchTextX = mapX + textH + 8;  // after a swatch of textH x textH
+  const int cellsY = shadingY + int(shading.size()) * lineH;
 
   int width = std::max({labelX + labelW + pad, pad + textWidth(title, s) + pad,
                         mapX + scaleBarWidth(scale, s) + pad});
   for (const std::string& line : shading) width = std::max(width, mapX + textWidth(line, s) + pad);
-  if (anyUncut) width = std::max(width, uncutX + textWidth(uncutLabel, s) + pad);
-  const int lines = int(shading.size()) + (anyUncut ? 1 : 0);
+  for (const CellLegendLine& line : cellLines)
+    width = std::max(width, swatchTextX + textWidth(line.text, s) + pad);
+  const int lines = int(shading.size() + cellLines.size());
   const int height = shadingY + lines * lineH - 10 + pad;
   Canvas canvas(width, height);
   canvas.fill(0, 0, width, height, kBackground);
@@ -139,15 +144,14 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   // The map: each raster cell becomes an up x up square.
   for (int r = 0; r < grid.h; ++r)
     for (int a = 0; a < grid.w; ++a) {
-      const double z = grid.at(a, r);
-      if (uncut(z)) {
-        canvas.fill(mapX + a * up, mapY + r * up, up, up, kUncut);
-        continue;
-      }
-      const double t = range > 0 ? (z - zmin) / range : 0.5;
-      const double factor =
-          kAmbient + (1 - kAmbient) * light[size_t(r) * size_t(grid.w) + size_t(a)] / flat;
-      canvas.fill(mapX + a * up, mapY + r * up, up, up, shaded(viridis(t), factor, maxShade));
+      const size_t c = size_t(r) * size_t(grid.w) + size_t(a);
+      const double z = grid.z[c];
+      const double factor = kAmbient + (1 - kAmbient) * light[c] / flat;
+      Rgb colour = kNoMaterialColour;
+      if (kinds[c] == CellKind::NotCut) colour = shaded(kNotCutColour, factor, maxShade);
+      if (kinds[c] == CellKind::Cut)
+        colour = shaded(viridis(range > 0 ? (z - zmin) / range : 0.5), factor, maxShade);
+      canvas.fill(mapX + a * up, mapY + r * up, up, up, colour);
     }
   canvas.frame(mapX, mapY, mapW, mapH, kFrame);
 
@@ -163,14 +167,16 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
     canvas.text(labelX, top, t.label, s, kInk);
   }
 
-  // Scale bar under the map, what the shading exaggerates, and the uncut cells' swatch.
+  // Scale bar under the map, what the shading exaggerates, and the swatches of the
+  // cells not cut and without material.
   drawScaleBar(canvas, mapX, scaleY, scale, s);
   for (size_t k = 0; k < shading.size(); ++k)
     canvas.text(mapX, shadingY + int(k) * lineH, shading[k], s, kInk);
-  if (anyUncut) {
-    canvas.fill(mapX, uncutY, textH, textH, kUncut);
-    canvas.frame(mapX, uncutY, textH, textH, kFrame);
-    canvas.text(uncutX, uncutY, uncutLabel, s, kInk);
+  for (size_t k = 0; k < cellLines.size(); ++k) {
+    const int y = cellsY + int(k) * lineH;
+    canvas.fill(mapX, y, textH, textH, cellLines[k].colour);
+    canvas.frame(mapX, y, textH, textH, kFrame);
+    canvas.text(swatchTextX, y, cellLines[k].text, s, kInk);
   }
 
   writePng(canvas, path, options.title);

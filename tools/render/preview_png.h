@@ -3,8 +3,11 @@
 // hill shading (tools/render/relief_shading.h; light from the north-west, heights
 // exaggerated so that scallops show, and the fine texture more so that feed marks
 // show beside them, the factors in the legend), a colour bar with height ticks and a
-// scale bar; cells that no move reached in grey, "uncut" in the legend. North up, like the height
-// images. Not meant to be read back.
+// scale bar; cells that no move reached in grey lit by the relief, "not cut" in the
+// legend, and cells without material (NaN) white, "no material" (tools/render/
+// map_cells.h). North up, like the height images. Not meant to be read back.
+// `scallop export --hillshade --colour` draws a map read from a file with it, so the
+// two pictures of the same heights agree (the same shading, colours and exaggeration).
 #pragma once
 
 #include <cmath>
@@ -26,9 +29,13 @@ struct PreviewOptions {
   // Drawn above the map.
   std::string title;
   // The height the map started at, mm (a simulation's stock top): cells still at it
-  // were reached by no move and are drawn grey, "uncut" in the legend, outside the
+  // were reached by no move and are drawn grey, "not cut" in the legend, outside the
   // colour range. NaN: none is told apart (a map read from a file).
   double uncutHeight = NAN;
+  // The heights the map started at, cell by cell, on the map's own grid (a stock of any
+  // shape: tools/io/job.h fillStockHeights); cells not below them are not cut, as
+  // above. Null: uncutHeight alone.
+  const ZMap* stockHeights = nullptr;
   // Colour-bar range, mm; NaN: robust percentiles of the cut region of the (reduced)
   // map without the flanks that fall from its edge, see robustRange in
   // tools/render/height_colours.h. The range comes from the picture's own cells, so a map

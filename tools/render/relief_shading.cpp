@@ -32,9 +32,12 @@ HeightRaster reduceMap(const ZMap& map, int maxPixels) {
     const size_t rowBase = size_t(p.h - 1 - j / k) * size_t(p.w);
     for (int64_t i = 0; i < map.nx(); ++i) {
       double& z = p.z[rowBase + size_t(i / k)];
-      z = std::min(z, map.at(i, j));
+      z = std::min(z, map.at(i, j));  // a cell without material (NaN) leaves z as it is
     }
   }
+  // A block without material (still HUGE_VAL, or a pooled copy's HUGE_VAL) holds none.
+  for (double& z : p.z)
+    if (!std::isfinite(z)) z = NAN;
   return p;
 }
 
@@ -45,9 +48,18 @@ Slopes slopes(const HeightRaster& p) {
   s.dzdy.resize(n);
   for (int r = 0; r < p.h; ++r)
     for (int a = 0; a < p.w; ++a) {
-      const int a0 = std::max(0, a - 1), a1 = std::min(p.w - 1, a + 1);
-      const int r0 = std::max(0, r - 1), r1 = std::min(p.h - 1, r + 1);  // r0 is north
+      // A neighbour without material (NaN) is left out like one beyond the edge.
+      int a0 = std::max(0, a - 1), a1 = std::min(p.w - 1, a + 1);
+      int r0 = std::max(0, r - 1), r1 = std::min(p.h - 1, r + 1);  // r0 is north
+      if (std::isnan(p.at(a0, r))) a0 = a;
+      if (std::isnan(p.at(a1, r))) a1 = a;
+      if (std::isnan(p.at(a, r0))) r0 = r;
+      if (std::isnan(p.at(a, r1))) r1 = r;
       const size_t idx = size_t(r) * size_t(p.w) + size_t(a);
+      if (std::isnan(p.at(a, r))) {
+        s.dzdx[idx] = s.dzdy[idx] = 0;  // drawn as no material, not lit
+        continue;
+      }
       s.dzdx[idx] = a1 > a0 ? (p.at(a1, r) - p.at(a0, r)) / ((a1 - a0) * p.cellMm) : 0.0;
       s.dzdy[idx] = r1 > r0 ? (p.at(a, r0) - p.at(a, r1)) / ((r1 - r0) * p.cellMm) : 0.0;
     }
@@ -72,23 +84,34 @@ double automaticExaggeration(const Slopes& s) {
 }
 
 Slopes textureSlopes(const HeightRaster& p, int radius) {
-  // Box mean as two running sums (rows, then columns), each window clamped at the edge.
+  // Box mean as running sums of the heights and of the cells with material (rows, then
+  // columns), each window clamped at the edge; cells without material (NaN) count in
+  // neither.
   const size_t w = size_t(p.w), h = size_t(p.h);
-  std::vector<double> rows(p.z.size()), mean(p.z.size());
-  auto boxLine = [radius](const double* in, double* out, size_t n, size_t stride) {
+  std::vector<double> height(p.z.size()), count(p.z.size());
+  for (size_t i = 0; i < p.z.size(); ++i) {
+    const bool material = !std::isnan(p.z[i]);
+    height[i] = material ? p.z[i] : 0.0;
+    count[i] = material ? 1.0 : 0.0;
+  }
+  auto boxLine = [radius](std::vector<double>& v, size_t first, size_t n, size_t stride) {
     const long r = radius, last = long(n) - 1;
+    auto in = [&](long k) { return v[first + size_t(std::clamp(k, 0L, last)) * stride]; };
+    std::vector<double> out(n);
     double sum = 0;
-    for (long k = -r; k <= r; ++k) sum += in[size_t(std::clamp(k, 0L, last)) * stride];
+    for (long k = -r; k <= r; ++k) sum += in(k);
     for (long i = 0; i <= last; ++i) {
-      out[size_t(i) * stride] = sum / double(2 * r + 1);
-      sum +=
-          in[size_t(std::min(i + r + 1, last)) * stride] - in[size_t(std::max(i - r, 0L)) * stride];
+      out[size_t(i)] = sum;
+      sum += in(i + r + 1) - in(i - r);
     }
+    for (size_t i = 0; i < n; ++i) v[first + i * stride] = out[i];
   };
-  for (size_t r = 0; r < h; ++r) boxLine(&p.z[r * w], &rows[r * w], w, 1);
-  for (size_t a = 0; a < w; ++a) boxLine(&rows[a], &mean[a], h, w);
+  for (std::vector<double>* v : {&height, &count}) {
+    for (size_t r = 0; r < h; ++r) boxLine(*v, r * w, w, 1);
+    for (size_t a = 0; a < w; ++a) boxLine(*v, a, h, w);
+  }
   HeightRaster local = p;
-  for (size_t i = 0; i < local.z.size(); ++i) local.z[i] = p.z[i] - mean[i];
+  for (size_t i = 0; i < local.z.size(); ++i) local.z[i] = p.z[i] - height[i] / count[i];
   return slopes(local);
 }
 

@@ -19,6 +19,7 @@
 #include "raycast/simulation.h"
 #include "raycast/stamp_caster.h"
 #include "tools/run/bench_cases.h"
+#include "tools/run/read_bench.h"
 #include "tools/run/report.h"
 #include "tools/run/stopwatch.h"
 
@@ -245,7 +246,11 @@ json stampJson(const StampComparison& c) {
 }  // namespace
 
 BenchResult runBench(const BenchSettings& args) {
-  const std::vector<std::string> names = args.cases.empty() ? defaultBenchCaseNames() : args.cases;
+  std::vector<std::string> names = args.cases.empty() ? defaultBenchCaseNames() : args.cases;
+  // B11 reads a program, simulates nothing: it runs apart from the cases (read_bench.h).
+  const bool reading =
+      args.cases.empty() || std::find(names.begin(), names.end(), "B11") != names.end();
+  names.erase(std::remove(names.begin(), names.end(), "B11"), names.end());
   BenchCaseOptions caseOptions;
   caseOptions.quick = args.quick;
   caseOptions.area = args.area;
@@ -309,6 +314,16 @@ BenchResult runBench(const BenchSettings& args) {
   json doc = newReport(threads);
   doc["cases"] = json::array();
   for (const CaseResult& r : results) doc["cases"].push_back(caseJson(r));
+  if (reading) {
+    const ReadBenchResult read = runReadBench(args.quick, args.area);
+    doc["reading"] = {{"name", "B11"},
+                      {"width_mm", read.width},
+                      {"bytes", read.bytes},
+                      {"moves", read.moves},
+                      {"seconds", read.seconds},
+                      {"mb_per_s", read.bytes / 1e6 / read.seconds},
+                      {"moves_per_s", double(read.moves) / read.seconds}};
+  }
   doc["stamp_ratio"] = ratio;
   doc["stamp"] = stamp;
   doc["quick"] = args.quick;

@@ -4,10 +4,12 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "analysis/vertex_normals.h"
 #include "base/input_error.h"
+#include "raycast/simulation.h"
 #include "sweep/tool_path_sweep.h"
 #include "tools/io/stl_io.h"
 #include "tools/io/tool_path_file.h"
@@ -19,9 +21,39 @@ namespace {
 
 // The tool path of a job with "path": {"file": ...}, and the cutter from its CUTTER/
 // when the job has no "tool".
+// The grid a path file's reader keeps the moves of (tools/io/move_window.h): none when
+// the reach of the cutters is not known before reading (the cutter comes from the file),
+// in a frame, or with a design (its lines leave the grid's columns).
+std::optional<ReadWindow> readWindow(const Job& job) {
+  if ((!job.hasTool && job.tools.empty()) || job.frame || job.design || job.normalDeviation)
+    return std::nullopt;
+  ReadWindow w;
+  const SweepWindow cells = cellWindow(job.grid());
+  w.x0 = cells.x0, w.y0 = cells.y0, w.x1 = cells.x1, w.y1 = cells.y1;
+  w.stock = job.stock;
+  w.cutting = job.cutting;
+  std::vector<Cutter> cutters;
+  if (job.hasTool) cutters.push_back(job.cutter);
+  for (const auto& [number, cutter] : job.tools) cutters.push_back(cutter);
+  for (const Cutter& c : cutters) {
+    const Cutter swept = job.cutting.teeth() ? c.spindleEnvelope() : c;
+    w.radius = std::max(w.radius, swept.radius);
+    w.fluteLength = std::max(w.fluteLength, swept.fluteLength + c.teeth.axialReach());
+  }
+  if (job.hasTool) w.oneToolFlutes = job.cutter.teeth.flutes;
+  else if (job.tools.size() == 1) w.oneToolFlutes = job.tools.begin()->second.teeth.flutes;
+  return w;
+}
+
 void readPathFile(Job& job) {
   job.pathReadOptions = job.pathOptions();
-  ToolPathFile read = readToolPathFile(job.pathFile, job.pathReadOptions);
+  PathFileOptions first = job.pathReadOptions;  // a re-read as a stream keeps every move
+  first.window = readWindow(job);
+  ToolPathFile read = readToolPathFile(job.pathFile, first);
+  job.movesRead = read.movesRead;
+  job.pathFileBytes = read.fileBytes;
+  job.pathReadSeconds = read.readSeconds;
+  job.toolMoves = read.toolMoves;
   const bool multiTool = !read.path.cutters.empty();
   if (!job.hasTool && job.tools.empty() && !read.cutter)
     throw InputError("tool",
@@ -57,7 +89,11 @@ void readPathFile(Job& job) {
                       "its CUTTER/ differs from the job's \"tool\"; the job's "
                       "tool is used");
   checkPathMagnitudes(read.path, read.moveLines, job.pathFile);
-  warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile, job.stockSolid.get());
+  const std::string stockName =
+      job.stockSolid ? "the solid stock " + job.stockStlFile
+      : job.stockMap ? "the bounding box of the stock map " + job.stockGsfFile
+                     : "the stock box";
+  warnRapidsIntoStock(read, job.cutter, job.stock, job.pathFile, job.stockSolid.get(), stockName);
   job.path = std::move(read.path);
   job.moveLines = std::move(read.moveLines);
   job.pathWarnings = std::move(read.warnings);

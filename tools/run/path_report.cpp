@@ -25,7 +25,14 @@ json pathFileReport(const Job& job, bool quiet) {
   for (const IgnoredWords::Entry& e : job.ignoredWords.entries)
     ignored.push_back(
         {{"word", e.word}, {"meaning", e.meaning}, {"count", e.count}, {"lines", e.lines}});
+  // The read: every move of the file, those kept (that can reach the grid), the rate.
+  const double seconds = job.pathReadSeconds;
   json r = {{"format", job.pathFormat},
+            {"moves_read", job.movesRead},
+            {"moves_kept", job.path.moves.size()},
+            {"read_seconds", seconds},
+            {"read_mb_per_second", seconds > 0 ? job.pathFileBytes / 1e6 / seconds : 0.0},
+            {"read_moves_per_second", seconds > 0 ? double(job.movesRead) / seconds : 0.0},
             {"warnings", w.kept},
             {"warnings_total", w.total},
             {"ignored_words", ignored}};
@@ -34,12 +41,19 @@ json pathFileReport(const Job& job, bool quiet) {
     // The tools of a multi-tool program, each with the cutting moves it makes.
     std::vector<int64_t> moves(cutters.size(), 0), first(cutters.size(), 0),
         last(cutters.size(), 0);
-    for (size_t k = 0; k < job.path.moves.size(); ++k) {
-      const Move& m = job.path.moves[k];
-      if (m.rapid || m.tool >= cutters.size()) continue;
-      const int64_t line = k < job.moveLines.size() ? job.moveLines[k] : 0;
-      if (moves[m.tool]++ == 0) first[m.tool] = line;
-      last[m.tool] = line;
+    // Of every move read when the reader left some out (tools/io/move_window.h).
+    if (!job.toolMoves.empty()) {
+      for (size_t t = 0; t < cutters.size() && t < job.toolMoves.size(); ++t)
+        moves[t] = job.toolMoves[t].count, first[t] = job.toolMoves[t].firstLine,
+        last[t] = job.toolMoves[t].lastLine;
+    } else {
+      for (size_t k = 0; k < job.path.moves.size(); ++k) {
+        const Move& m = job.path.moves[k];
+        if (m.rapid || m.tool >= cutters.size()) continue;
+        const int64_t line = k < job.moveLines.size() ? job.moveLines[k] : 0;
+        if (moves[m.tool]++ == 0) first[m.tool] = line;
+        last[m.tool] = line;
+      }
     }
     json tools = json::array();
     for (size_t t = 0; t < cutters.size(); ++t) {

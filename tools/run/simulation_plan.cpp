@@ -92,7 +92,8 @@ SimulationPlan planSimulation(const Job& job, const RunSettings& settings, doubl
   // A path whose whole scene does not fit runs in bands, each with the scene of the moves
   // that reach it (tiled_simulation.h).
   plan.sceneBands = plan.exact && !plan.memory.wholeSceneFits();
-  plan.pathMoves = job.path.moves.size();
+  // Every move of the file: what a re-read as a stream (which keeps them all) counts.
+  plan.pathMoves = job.pathFile.empty() || job.movesRead == 0 ? job.path.moves.size() : job.movesRead;
   plan.cuttingMoves = job.path.cuttingMoves();
   plan.streamPath = plan.sceneBands && pathStreams(job);
   if (plan.streamPath)

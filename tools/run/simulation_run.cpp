@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <utility>
 
 #include "base/input_error.h"
@@ -126,6 +127,14 @@ json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& 
   PreviewOptions preview;
   preview.title = previewTitle(title);
   preview.uncutHeight = job.stockTop();  // the map's initial height (raycast/simulation.h)
+  // A stock of any shape starts each cell at its own height: the preview tells the cells
+  // still there from the cut ones by them (one more map of the grid while it is drawn).
+  std::optional<ZMap> stockHeights;
+  if (job.shapedStock()) {
+    stockHeights.emplace(map.grid(), job.stock.max.z);
+    job.fillStockHeights(*stockHeights);
+    preview.stockHeights = &*stockHeights;
+  }
   writePreviewPng(map, (dir / "preview.png").string(), preview);
   if (settings.view) {
     RenderOptions view;
@@ -133,6 +142,7 @@ json runInMemory(const Job& job, const SimulationPlan& plan, const RunSettings& 
     view.uncutHeight = preview.uncutHeight;
     writeRenderPng(map, wholeMap(map.grid()), (dir / "view.png").string(), view, "--view");
   }
+  stockHeights.reset();
 
   RunRecord run = inMemoryRecord(job, plan, settings, h);
   run.design = job.design ? designReport(job, map, settings.outDir, settings.quiet) : json();

@@ -145,7 +145,19 @@ TEST(GcodeReader, MalformedInputIsNamedByLine) {
   EXPECT_NE(error(start + "M-99999999999\n").find("t.nc:3: unsupported M-word"), std::string::npos);
   EXPECT_NE(error(start + "G1 X\n").find("t.nc:3: word X has no number"), std::string::npos);
   EXPECT_NE(error(start + "G1 Xnan\n").find("t.nc:3"), std::string::npos);
-  EXPECT_NE(error(start + "G1 X1e5\n").find("t.nc:3"), std::string::npos);
+  // An exponent is named as written, not as a word E (G-code numbers have none).
+  const std::string exponent = error(start + "G1 X1e300\n");
+  EXPECT_NE(exponent.find("t.nc:3: \"X1e300\": G-code numbers have no exponent"),
+            std::string::npos)
+      << exponent;
+  EXPECT_EQ(exponent.find("unsupported word"), std::string::npos) << exponent;
+  EXPECT_NE(error(start + "G1 X0 Y2E5\n").find("t.nc:3: \"Y2E5\": G-code numbers have no exponent"),
+            std::string::npos);
+  EXPECT_NE(error(start + "G1 x-1.5e-3 (a comment 2e5)\n").find("\"x-1.5e-3\": G-code numbers"),
+            std::string::npos);
+  // An E word after a space is a word, refused as one; "G1X2" is two words.
+  EXPECT_NE(error(start + "G1 X1 E5\n").find("t.nc:3: unsupported word E5"), std::string::npos);
+  EXPECT_EQ(error(start + "G1X2Y1\n"), "");
   EXPECT_NE(error(start + "G1 X1\nG20\n").find("t.nc:4: mixed units"), std::string::npos);
   EXPECT_NE(error(start + "G2 X2 Y0 I1.5 J0\n").find("t.nc:3: arc radii differ"),
             std::string::npos);

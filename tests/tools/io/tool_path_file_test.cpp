@@ -98,9 +98,20 @@ TEST_F(PathFile, RapidThroughTheStockIsWarnedWithItsLine) {
   const Job job = loadJobFile(write("j.json", withPath(R"({"file": "p.txt"})")).string());
   // Line 5's rapid goes back across the stock at z = -0.2 (its ends are outside).
   ASSERT_EQ(job.pathWarnings.total, 1u);
-  EXPECT_NE(job.pathWarnings.kept[0].find("p.txt:5: rapid move cuts the stock"), std::string::npos);
-  // The one from line 8 goes up, outside the stock's xy box: no warning.
-  EXPECT_EQ(job.moveLines.back(), 8);
+  // Worded for a box: the cutter's lowest point, the tip there, how deep below the top,
+  // and that the check knows the stock as it started only.
+  const std::string& w = job.pathWarnings.kept[0];
+  EXPECT_NE(w.find("p.txt:5: rapid move cuts the stock box: the cutter's lowest point, z = -0.2 "
+                   "mm with the tip at (x, y) = (8, 1) mm, is 0.2 mm below its top z = 0 mm"),
+            std::string::npos)
+      << w;
+  EXPECT_NE(w.find("judged against the stock as it started, not the material earlier moves left"),
+            std::string::npos)
+      << w;
+  // The one from line 8 goes up, outside the stock's xy box: no warning. It cannot
+  // reach the grid either: read, and left out (tools/io/move_window.h).
+  EXPECT_EQ(job.movesRead, 4u);
+  EXPECT_EQ(job.moveLines.back(), 6);
 }
 
 TEST_F(PathFile, ToolIsRequiredUnlessThePathDefinesIt) {

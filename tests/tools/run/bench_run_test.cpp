@@ -57,6 +57,31 @@ TEST(BenchRun, OneCaseGivesTheHeightsOfSimulateAndNamesItsStages) {
   EXPECT_EQ(c["heights_hash"].get<std::string>(), test::simulatedQuickHash("B1", 1));
 }
 
+// B11 reads its generated program alone (no simulation case): every G1 of it is a move
+// (the passes' points), and the rates are the counts over the seconds.
+TEST(BenchRun, TheReadingCaseCountsTheProgramsMoves) {
+  BenchSettings s;
+  s.quick = true;
+  s.cases = {"B11"};
+  s.area = 4;
+  s.stamp = false;
+  const BenchResult r = runBench(s);
+  EXPECT_TRUE(r.report["cases"].empty());
+  ASSERT_TRUE(r.report.contains("reading"));
+  const nlohmann::json& b = r.report["reading"];
+  Box3 stock;
+  stock.extend({0, 0, -5});
+  stock.extend({4, 2, 0});
+  const std::string text = finishingGcode(Cutter::make(CutterType::Ball, 1), stock, 0.1, 0.05);
+  size_t g1 = 0;
+  for (size_t at = text.find("G1 "); at != std::string::npos; at = text.find("G1 ", at + 1)) ++g1;
+  EXPECT_GE(b["moves"].get<size_t>(), g1);
+  EXPECT_LE(b["moves"].get<size_t>(), g1 + 3 * 21 + 1);  // and the rapids: 3 a pass, 21 passes
+  EXPECT_EQ(b["bytes"].get<double>(), double(text.size()));
+  EXPECT_DOUBLE_EQ(b["moves_per_s"].get<double>(),
+                   b["moves"].get<double>() / b["seconds"].get<double>());
+}
+
 TEST(BenchRun, TheStampingBaselineHasItsOwnStage) {
   BenchSettings s = smallB1();
   s.stamp = true;

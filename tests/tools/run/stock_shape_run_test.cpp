@@ -126,9 +126,21 @@ TEST_F(StockShapeRun, RapidsAreJudgedAgainstTheSolidNotItsBox) {
     "path": {"file": "p.txt"}})";
   const Job solid = loadJobFile(write("s.json", R"({"stock": {"stl": "cone.stl"})" + tail));
   ASSERT_EQ(solid.pathWarnings.total, 1u);
-  EXPECT_NE(solid.pathWarnings.kept[0].find("p.txt:10: rapid move cuts the stock"),
+  // Worded for the solid: its highest point within the ball's reach (R = 1) of the
+  // rapid is the apex (10, 10, 0), 0.5 mm above the ball's lowest point.
+  const std::string& w = solid.pathWarnings.kept[0];
+  EXPECT_NE(w.find("p.txt:10: rapid move cuts the solid stock "), std::string::npos) << w;
+  EXPECT_NE(w.find("cone.stl: the solid rises to z = 0 mm at (x, y) = (10, 10) mm within the "
+                   "cutter's reach of the move, 0.5 mm above the cutter's lowest point (z = -0.5 "
+                   "mm); judged against the stock as it started"),
             std::string::npos)
-      << solid.pathWarnings.kept[0];
+      << w;
+  EXPECT_EQ(w.find("stock top"), std::string::npos) << w;
+  // A warning, not an error: the run completes (exit 0) and says it on stderr.
+  const test::CliRun r = run("simulate " + path("s.json") + " -o " + path("out"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("rapid move cuts the solid stock"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "report.json"));
   // The same path over the cone's bounding box as a box stock warns of both.
   const Job box =
       loadJobFile(write("b.json", R"({"stock": {"min": [2, 2, -4], "max": [18, 18, 0]})" + tail));
