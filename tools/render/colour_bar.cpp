@@ -12,7 +12,7 @@ constexpr int kLabelGap = 5;   // between the tick and its label, px at scale 1
 
 }  // namespace
 
-std::vector<ColourBarTick> colourBarTicks(double zLow, double zHigh, int barPx, int textPx) {
+std::vector<ColourBarTick> colourBarTicks(double zLow, double zHigh, int barPx, int gapPx) {
   const double range = zHigh - zLow;
   const double largest = std::max(std::abs(zLow), std::abs(zHigh));
   const bool micro = range > 0 ? range < 0.5 : largest < 0.5;
@@ -24,7 +24,7 @@ std::vector<ColourBarTick> colourBarTicks(double zLow, double zHigh, int barPx, 
   std::vector<ColourBarTick> ticks = {
       {zHigh, png::formatValue(zHigh * unitPerMm, decimals + 1, unit)},
       {zLow, png::formatValue(zLow * unitPerMm, decimals + 1, unit)}};
-  const double minGapMm = 2 * textPx * range / std::max(1, barPx - 1);
+  const double minGapMm = gapPx * range / std::max(1, barPx - 1);
   step /= unitPerMm;
   for (double v = std::ceil(zLow / step) * step; v < zHigh; v += step) {
     bool fits = true;
@@ -36,7 +36,7 @@ std::vector<ColourBarTick> colourBarTicks(double zLow, double zHigh, int barPx, 
 
 int colourBarWidth(double zLow, double zHigh, int barPx, int scale) {
   int labels = 0;
-  for (const ColourBarTick& t : colourBarTicks(zLow, zHigh, barPx, png::kCapHeightPx * scale))
+  for (const ColourBarTick& t : colourBarTicks(zLow, zHigh, barPx, 2 * png::kCapHeightPx * scale))
     labels = std::max(labels, png::textWidth(t.label, scale));
   return (kBarWidth + kLabelGap) * scale + 5 + labels;
 }
@@ -48,7 +48,7 @@ void drawColourBar(png::Canvas& canvas, int x, int y, int barPx, double zLow, do
   for (int k = 0; k < barPx; ++k)
     canvas.fill(x, y + k, barW, 1, colourAt(map, range > 0 ? 1.0 - double(k) / (barPx - 1) : 0.5));
   canvas.frame(x, y, barW, barPx, png::kFrame);
-  for (const ColourBarTick& t : colourBarTicks(zLow, zHigh, barPx, textH)) {
+  for (const ColourBarTick& t : colourBarTicks(zLow, zHigh, barPx, 2 * textH)) {
     const int ty =
         range > 0 ? y + int(std::lround((zHigh - t.valueMm) / range * (barPx - 1))) : y + barPx / 2;
     canvas.fill(x + barW, ty, 5, 1, png::kInk);

@@ -17,8 +17,10 @@ struct ColourBarTick {
   std::string label;
 };
 
-// Ticks for a bar `barPx` tall whose labels are `textPx` tall.
-std::vector<ColourBarTick> colourBarTicks(double zLow, double zHigh, int barPx, int textPx);
+// Ticks for a bar `barPx` tall, the two ends and round values between them at least
+// `gapPx` from every other tick (the 3-D picture's bar: two text heights; preview.png's:
+// a text height and 4 px).
+std::vector<ColourBarTick> colourBarTicks(double zLow, double zHigh, int barPx, int gapPx);
 
 // The width the bar with its labels takes at font `scale`, px.
 int colourBarWidth(double zLow, double zHigh, int barPx, int scale);

@@ -13,6 +13,7 @@
 #include "base/constants.h"
 #include "base/input_error.h"
 #include "tools/io/atomic_file.h"
+#include "tools/render/colour_bar.h"
 #include "tools/render/height_colours.h"
 #include "tools/render/map_cells.h"
 #include "tools/render/png_canvas.h"
@@ -44,35 +45,6 @@ constexpr double kAmbient = 0.3;
 // millimetres on screen) is what automaticTextureBoost may exaggerate further.
 constexpr int kTextureRadius = 12;
 
-struct Tick {
-  double value;
-  std::string label;
-};
-
-// Labels for the colour bar: min and max, and round values between them that leave
-// room for the text.
-std::vector<Tick> colourBarTicks(double zmin, double zmax, int barH, int textH) {
-  const double range = zmax - zmin;
-  const double largest = std::max(std::abs(zmin), std::abs(zmax));
-  const bool micro = range > 0 ? range < 0.5 : largest < 0.5;
-  const double unitPerMm = micro ? 1000.0 : 1.0;
-  const std::string unit = micro ? "\u00b5m" : "mm";
-  if (!(range > 0)) return {{zmin, formatValue(zmin * unitPerMm, micro ? 1 : 4, unit)}};
-
-  double step = niceBelow(range * unitPerMm / 3);
-  const int decimals = std::max(0, -int(std::floor(std::log10(step) + 1e-9)));
-  std::vector<Tick> ticks = {{zmax, formatValue(zmax * unitPerMm, decimals + 1, unit)},
-                             {zmin, formatValue(zmin * unitPerMm, decimals + 1, unit)}};
-  const double pxPerMm = (barH - 1) / range;
-  const double minGapMm = (textH + 4) / pxPerMm;
-  step /= unitPerMm;
-  for (double v = std::ceil(zmin / step) * step; v < zmax; v += step) {
-    bool fits = true;
-    for (const Tick& t : ticks) fits = fits && std::abs(t.value - v) >= minGapMm;
-    if (fits) ticks.push_back({v, formatValue(v * unitPerMm, decimals, unit)});
-  }
-  return ticks;
-}
 
 }  // namespace
 
@@ -116,9 +88,9 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   const int mapX = pad, mapY = pad + (title.empty() ? 0 : textH + 12);
   const int barH = std::max(mapH, 200);
   const int barX = mapX + mapW + 24;
-  const std::vector<Tick> ticks = colourBarTicks(zmin, zmax, barH, textH);
+  const std::vector<ColourBarTick> ticks = colourBarTicks(zmin, zmax, barH, textH + 4);
   int labelW = 0;
-  for (const Tick& t : ticks) labelW = std::max(labelW, textWidth(t.label, s));
+  for (const ColourBarTick& t : ticks) labelW = std::max(labelW, textWidth(t.label, s));
   const int labelX = barX + barW + 10;
 
   const ScaleBar scale = scaleBarFor(grid.cellMm / up, mapW);
@@ -159,8 +131,8 @@ double writePreviewPng(const ZMap& map, const std::string& path, const PreviewOp
   for (int y = 0; y < barH; ++y)
     canvas.fill(barX, mapY + y, barW, 1, viridis(range > 0 ? 1.0 - double(y) / (barH - 1) : 0.5));
   canvas.frame(barX, mapY, barW, barH, kFrame);
-  for (const Tick& t : ticks) {
-    const int y = range > 0 ? mapY + int(std::lround((zmax - t.value) / range * (barH - 1)))
+  for (const ColourBarTick& t : ticks) {
+    const int y = range > 0 ? mapY + int(std::lround((zmax - t.valueMm) / range * (barH - 1)))
                             : mapY + barH / 2;
     canvas.fill(barX + barW, y, 5, 1, kInk);
     const int top = std::clamp(y - textH / 2, 0, height - textH);

@@ -31,8 +31,9 @@ TEST(CutterShapeTable, EveryExampleBuildsItsType) {
     for (const CutterPicture& picture : shape.pictures) {
       const Cutter cutter = parseCutter(json::parse(picture.tool), "tool");
       // An APT CUTTER/ becomes the type it describes (ball, flat, bull or a profile).
-      if (std::string(shape.type) != "apt")
+      if (std::string(shape.type) != "apt") {
         EXPECT_STREQ(toString(cutter.type), shape.type) << picture.tool;
+      }
       EXPECT_GT(cutter.radius, 0) << picture.tool;
       EXPECT_GT(cutter.fluteLength, 0) << picture.tool;
     }
