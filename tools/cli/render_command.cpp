@@ -56,8 +56,9 @@ Command addRenderCommand(CLI::App& parent, CommonOptions& common) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* app = parent.add_subcommand(
       "render",
-      "A 3-D picture of a height map for papers and reports, ray-traced with Embree: the\n"
-      "surface in oblique light with shadows, coloured by height, on walls down to a base,\n"
+      "Draw a height map in 3-D, ray-traced with light, shadows and a colour bar.\n"
+      "A picture for papers and reports, ray-traced with Embree: the surface in oblique\n"
+      "light with shadows, coloured by height, on walls down to a base,\n"
       "a colour bar in um (or mm), a box with ticks in mm, and a note of the vertical\n"
       "exaggeration, light and view. HEIGHTS is any height map scallop reads: .gsf, .exr,\n"
       ".x3p, the 16-bit .png/.tif of `scallop export`, or a folder of `simulate --bands`\n"
